@@ -1,0 +1,26 @@
+# Compiler settings shared by every penumbra target: warnings, sanitizers, ccache.
+
+add_library(penumbra_warnings INTERFACE)
+if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  target_compile_options(penumbra_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshadow
+                                                     -Wnon-virtual-dtor -Wconversion -Wno-sign-conversion)
+  if(PENUMBRA_WARNINGS_AS_ERRORS)
+    target_compile_options(penumbra_warnings INTERFACE -Werror)
+  endif()
+endif()
+
+if(PENUMBRA_SANITIZE)
+  string(REPLACE ";" "," _penumbra_sanitizers "${PENUMBRA_SANITIZE}")
+  add_compile_options(-fsanitize=${_penumbra_sanitizers} -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=${_penumbra_sanitizers})
+endif()
+
+if(PENUMBRA_USE_CCACHE)
+  find_program(PENUMBRA_CCACHE ccache)
+  if(PENUMBRA_CCACHE)
+    # Precompiled headers are only cacheable with this sloppiness.
+    set(CMAKE_CXX_COMPILER_LAUNCHER
+        ${CMAKE_COMMAND} -E env CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
+        ${PENUMBRA_CCACHE})
+  endif()
+endif()

@@ -1,0 +1,16 @@
+# Every dependency comes from Debian packages (scripts/setup installs them).
+
+find_package(CGAL 5.4 REQUIRED)
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(TBB REQUIRED)
+find_package(PNG REQUIRED)
+if(PENUMBRA_BUILD_CLI)
+  find_package(CLI11 REQUIRED)
+endif()
+if(PENUMBRA_BUILD_TESTS)
+  find_package(Boost 1.74 REQUIRED COMPONENTS unit_test_framework)
+endif()
+if(PENUMBRA_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

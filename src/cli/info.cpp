@@ -1,0 +1,90 @@
+// penumbra info SCENE: counts, and each object's faces with their exact planes.
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "penumbra/io/rational.h"
+#include "penumbra/scene/load_scene.h"
+#include "verbs.h"
+
+namespace penumbra::cli {
+namespace {
+
+// prints the plane scaled so that its largest normal component has magnitude 1:
+// a canonical exact form, then the same in doubles.
+void print_plane(std::ostream& out, const Plane3& plane) {
+  Exact scale = CGAL::abs(plane.a());
+  for (const Exact& c : {plane.b(), plane.c()})
+    if (CGAL::abs(c) > scale) scale = CGAL::abs(c);
+  const Exact coefficients[4] = {plane.a() / scale, plane.b() / scale, plane.c() / scale,
+                                 plane.d() / scale};
+  out << "plane [";
+  for (int i = 0; i < 4; ++i) out << (i ? ", " : "") << io::rational_string(coefficients[i]);
+  out << "] ~ [";
+  for (int i = 0; i < 4; ++i) out << (i ? ", " : "") << CGAL::to_double(coefficients[i]);
+  out << "]";
+}
+
+const char* light_kind(const Light& light) {
+  if (std::holds_alternative<PointLight>(light.source)) return "point";
+  if (std::holds_alternative<LinearLight>(light.source)) return "linear";
+  return "directional";
+}
+
+int run_info(const std::string& path) {
+  const Scene scene = load_scene(path);
+  for (const std::string& warning : scene.warnings) std::cerr << "penumbra: warning: " << warning << "\n";
+
+  std::size_t faces = 0, vertices = 0;
+  for (const Object& object : scene.objects) {
+    faces += object.solid.faces().size();
+    vertices += object.solid.vertices().size();
+  }
+  std::cout << "scene " << path << "\n"
+            << "objects " << scene.objects.size() << ", faces " << faces << ", vertices " << vertices
+            << ", lights " << scene.lights.size() << ", materials " << scene.materials.size() - 1
+            << "\n";
+  for (const Object& object : scene.objects) {
+    std::cout << "\nobject " << object.name << " (" << object.kind << (object.solid.is_flat() ? ", two-sided" : "")
+              << ", material " << scene.materials[object.material].name << "): "
+              << object.solid.faces().size() << " faces, " << object.solid.vertices().size()
+              << " vertices\n";
+    for (std::size_t f = 0; f < object.solid.faces().size(); ++f) {
+      const Face& face = object.solid.faces()[f];
+      std::cout << "  face " << f << ": " << face.vertices.size() << " vertices, ";
+      print_plane(std::cout, face.plane);
+      std::cout << "\n";
+    }
+  }
+  std::cout << "\n";
+  for (const Light& light : scene.lights) {
+    std::cout << "light " << light.name << " (" << light_kind(light) << ")";
+    if (const auto* point = std::get_if<PointLight>(&light.source))
+      std::cout << " at [" << point->position[0] << ", " << point->position[1] << ", "
+                << point->position[2] << "], max " << point->distribution->max_intensity() << " cd";
+    if (const auto* tube = std::get_if<LinearLight>(&light.source))
+      std::cout << " from [" << tube->start[0] << ", " << tube->start[1] << ", " << tube->start[2]
+                << "] to [" << tube->end[0] << ", " << tube->end[1] << ", " << tube->end[2] << "], "
+                << tube->candela_per_metre << " cd/m";
+    if (const auto* sun = std::get_if<DirectionalLight>(&light.source))
+      std::cout << " toward [" << sun->direction[0] << ", " << sun->direction[1] << ", "
+                << sun->direction[2] << "], " << sun->illuminance << " lx";
+    std::cout << "\n";
+  }
+  if (scene.camera)
+    std::cout << "camera " << scene.camera->width << " x " << scene.camera->height << ", fov "
+              << scene.camera->fov_deg << " deg\n";
+  return 0;
+}
+
+}  // namespace
+
+void register_info(CLI::App& app) {
+  CLI::App* verb = app.add_subcommand("info", "objects, faces, exact planes and lights of a scene");
+  auto path = std::make_shared<std::string>();
+  verb->add_option("SCENE", *path, "scene file (JSON)")->required();
+  verb->callback([path] { exit_status() = run_info(*path); });
+}
+
+}  // namespace penumbra::cli

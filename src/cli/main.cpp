@@ -1,0 +1,42 @@
+// penumbra: a thin command line over the library (DESIGN.md, "Command line").
+
+#include <iostream>
+
+#include "penumbra/input_error.h"
+#include "verbs.h"
+
+int main(int argc, char** argv) {
+  using namespace penumbra::cli;
+  CLI::App app{"penumbra: exact shadows and illuminance for scenes of convex polyhedra"};
+  app.name("penumbra");
+  app.require_subcommand(1);
+  app.footer("Exit status: 0 success, 1 a check found differences, 2 bad input or usage.\n"
+             "Run 'penumbra VERB --help' for the options of a verb.");
+
+  register_info(app);
+  register_pending(app, "shadows", "exact shadow polygons per face and light (JSON, SVG, DXF, CSV)", "#3");
+  register_pending(app, "check", "recompute shadows and compare exactly with a golden file", "#3");
+  register_pending(app, "illuminance", "illuminance (lux) at points or on a work plane", "#6");
+  register_pending(app, "render", "scanline image with isolux colour belts", "#7");
+  register_pending(app, "raytrace", "Whitted ray-traced image", "#8");
+  register_pending(app, "lid", "photometry: info, sample, fit and convert distributions", "#5");
+  register_pending(app, "radiosity", "interreflected illuminance on patches", "#9");
+  register_pending(app, "basis", "basis luminances for relighting", "#9");
+  register_pending(app, "relight", "relight from basis luminances", "#9");
+  register_pending(app, "serve", "interactive lighting design in a browser", "#10");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const penumbra::InputError& e) {
+    std::cerr << "penumbra: error: " << e.what() << "\n";
+    return 2;
+  }
+  return exit_status();
+}

@@ -1,0 +1,23 @@
+#pragma once
+// The verbs of `penumbra` (DESIGN.md, "Command line"). Each verb file registers
+// its subcommand and the callback that runs it; the callback returns the exit
+// status (0 success, 1 a check found differences, 2 bad input or usage).
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace penumbra::cli {
+
+using VerbResult = std::function<int()>;
+
+// The status a verb's callback sets for main() to return.
+int& exit_status();
+
+void register_info(CLI::App& app);
+
+// registers a verb that is not built yet: it says so and exits with status 2.
+void register_pending(CLI::App& app, const std::string& name, const std::string& description,
+                      const std::string& issue);
+
+}  // namespace penumbra::cli

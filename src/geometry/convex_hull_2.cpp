@@ -1,0 +1,58 @@
+#include "convex_hull_2.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace penumbra::detail {
+
+std::vector<int> convex_hull_2(const std::vector<Point2>& points) {
+  std::vector<int> order(points.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return CGAL::compare_xy(points[a], points[b]) == CGAL::SMALLER;
+  });
+  order.erase(std::unique(order.begin(), order.end(),
+                          [&](int a, int b) { return points[a] == points[b]; }),
+              order.end());
+  if (order.size() < 3) return order;
+
+  // Lower hull left to right, then upper hull right to left; a point is kept only
+  // when it makes a strict left turn, so collinear points fall out.
+  std::vector<int> hull;
+  auto add = [&](int index, std::size_t floor) {
+    while (hull.size() > floor &&
+           CGAL::orientation(points[hull[hull.size() - 2]], points[hull.back()], points[index]) !=
+               CGAL::LEFT_TURN)
+      hull.pop_back();
+    hull.push_back(index);
+  };
+  for (int index : order) add(index, 1);
+  const std::size_t lower_size = hull.size();
+  for (auto it = order.rbegin() + 1; it != order.rend(); ++it) add(*it, lower_size);
+  hull.pop_back();  // the first point closes the upper hull
+  return hull;
+}
+
+bool direction_less(const Vector3& a, const Vector3& b) {
+  const Exact a_length = a.squared_length();
+  const Exact b_length = b.squared_length();
+  for (int i = 0; i < 3; ++i) {
+    // sign(a_i) a_i^2 / |a|^2 is monotone in a_i / |a|; cross-multiply the lengths.
+    const Exact ka = (a[i] < 0 ? -a[i] * a[i] : a[i] * a[i]) * b_length;
+    const Exact kb = (b[i] < 0 ? -b[i] * b[i] : b[i] * b[i]) * a_length;
+    if (ka < kb) return true;
+    if (kb < ka) return false;
+  }
+  return false;
+}
+
+Vector3 in_plane_direction(const Vector3& normal) {
+  // Cross with the coordinate axis least aligned with the normal: never parallel.
+  int axis = 0;
+  for (int i = 1; i < 3; ++i)
+    if (CGAL::abs(normal[i]) < CGAL::abs(normal[axis])) axis = i;
+  const Vector3 e(axis == 0 ? 1 : 0, axis == 1 ? 1 : 0, axis == 2 ? 1 : 0);
+  return CGAL::cross_product(normal, e);
+}
+
+}  // namespace penumbra::detail

@@ -1,0 +1,151 @@
+#include "penumbra/geometry/convex_polyhedron.h"
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "convex_hull_2.h"
+#include "penumbra/geometry/geometry_error.h"
+
+namespace penumbra {
+namespace {
+
+bool point_less(const Point3& a, const Point3& b) {
+  return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
+}
+
+// rotates a cycle so that it starts at its lexicographically smallest point.
+void start_at_smallest(std::vector<Point3>& cycle) {
+  std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end(), point_less),
+              cycle.end());
+}
+
+}  // namespace
+
+ConvexPolyhedron ConvexPolyhedron::from_faces(std::vector<std::vector<Point3>> face_cycles,
+                                              bool flat) {
+  ConvexPolyhedron solid;
+  solid.flat_ = flat;
+  for (auto& cycle : face_cycles) {
+    start_at_smallest(cycle);
+    solid.vertices_.insert(solid.vertices_.end(), cycle.begin(), cycle.end());
+    Face face;
+    // Three consecutive vertices of a strictly convex counter-clockwise cycle give
+    // the outward orientation (Nishita eq. 3: F positive outside).
+    face.plane = Plane3(cycle[0], cycle[1], cycle[2]);
+    face.frame = FaceFrame(cycle[0], cycle[1] - cycle[0], face.plane.orthogonal_vector());
+    face.vertices = std::move(cycle);
+    solid.faces_.push_back(std::move(face));
+  }
+  std::sort(solid.vertices_.begin(), solid.vertices_.end(), point_less);
+  solid.vertices_.erase(std::unique(solid.vertices_.begin(), solid.vertices_.end()),
+                        solid.vertices_.end());
+  std::sort(solid.faces_.begin(), solid.faces_.end(), [](const Face& a, const Face& b) {
+    return detail::direction_less(a.normal(), b.normal());
+  });
+
+  std::map<std::pair<int, int>, int> face_of_edge;
+  for (std::size_t f = 0; f < solid.faces_.size(); ++f) {
+    Face& face = solid.faces_[f];
+    for (const Point3& p : face.vertices) {
+      const auto it = std::lower_bound(solid.vertices_.begin(), solid.vertices_.end(), p, point_less);
+      face.vertex_ids.push_back(static_cast<int>(it - solid.vertices_.begin()));
+    }
+    const std::size_t n = face.vertex_ids.size();
+    for (std::size_t k = 0; k < n; ++k)
+      face_of_edge[{face.vertex_ids[k], face.vertex_ids[(k + 1) % n]}] = static_cast<int>(f);
+  }
+  for (Face& face : solid.faces_) {
+    const std::size_t n = face.vertex_ids.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto it = face_of_edge.find({face.vertex_ids[(k + 1) % n], face.vertex_ids[k]});
+      face.neighbours.push_back(it == face_of_edge.end() ? -1 : it->second);
+    }
+  }
+  return solid;
+}
+
+ConvexPolyhedron ConvexPolyhedron::flat_polygon(const std::vector<Point3>& cycle) {
+  // Drop repeated consecutive points (cyclically); keep each point's input index.
+  std::vector<Point3> points;
+  std::vector<int> input_index;
+  for (std::size_t k = 0; k < cycle.size(); ++k) {
+    if (!points.empty() && points.back() == cycle[k]) continue;
+    points.push_back(cycle[k]);
+    input_index.push_back(static_cast<int>(k));
+  }
+  while (points.size() > 1 && points.front() == points.back()) {
+    points.pop_back();
+    input_index.pop_back();
+  }
+
+  // A plane from the first three non-collinear points.
+  std::size_t third = 2;
+  while (third < points.size() && CGAL::collinear(points[0], points[1], points[third])) ++third;
+  if (points.size() < 3 || third == points.size())
+    throw GeometryError("a polygon needs at least 3 points that are not all collinear");
+  const Vector3 normal = CGAL::cross_product(points[1] - points[0], points[third] - points[0]);
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (!CGAL::coplanar(points[0], points[1], points[third], points[k]))
+      throw GeometryError("the polygon is not planar: this point is off the plane of the others",
+                          input_index[k]);
+
+  const FaceFrame frame(points[0], detail::in_plane_direction(normal), normal);
+  std::vector<Point2> flat_points;
+  for (const Point3& p : points) flat_points.push_back(frame.to_frame(p));
+  const std::vector<int> hull = detail::convex_hull_2(flat_points);
+
+  // Convex position along the cycle: the points are distinct, and each consecutive
+  // pair lies on one edge of the hull (so the cycle walks the hull's boundary once).
+  auto on_hull_edge = [&](const Point2& p, const Point2& q) {
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      const Segment2 edge(flat_points[hull[i]], flat_points[hull[(i + 1) % hull.size()]]);
+      if (edge.has_on(p) && edge.has_on(q)) return true;
+    }
+    return false;
+  };
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    for (std::size_t j = 0; j < k; ++j)
+      if (points[j] == points[k])
+        throw GeometryError("the polygon is not simple: this point repeats an earlier one",
+                            input_index[k]);
+    if (!on_hull_edge(flat_points[k], flat_points[(k + 1) % points.size()]))
+      throw GeometryError("the polygon is not convex: this point is a reflex or crossing vertex",
+                          input_index[(k + 1) % points.size()]);
+  }
+
+  std::vector<Point3> front;
+  for (int index : hull) front.push_back(points[index]);
+  std::vector<Point3> back(front.rbegin(), front.rend());
+  return from_faces({std::move(front), std::move(back)}, true);
+}
+
+CGAL::Bbox_3 ConvexPolyhedron::bbox() const {
+  CGAL::Bbox_3 box;
+  for (const Point3& p : vertices_) box += p.bbox();
+  return box;
+}
+
+CGAL::Bounded_side ConvexPolyhedron::bounded_side(const Point3& p) const {
+  if (flat_) {
+    const Face& face = faces_.front();
+    if (face.plane.oriented_side(p) != CGAL::ON_ORIENTED_BOUNDARY) return CGAL::ON_UNBOUNDED_SIDE;
+    const Point2 q = face.frame.to_frame(p);
+    const std::size_t n = face.vertices.size();
+    for (std::size_t k = 0; k < n; ++k)
+      if (CGAL::orientation(face.frame.to_frame(face.vertices[k]),
+                            face.frame.to_frame(face.vertices[(k + 1) % n]), q) == CGAL::RIGHT_TURN)
+        return CGAL::ON_UNBOUNDED_SIDE;
+    return CGAL::ON_BOUNDARY;
+  }
+  bool on_boundary = false;
+  for (const Face& face : faces_) {
+    const CGAL::Oriented_side side = face.plane.oriented_side(p);
+    if (side == CGAL::ON_POSITIVE_SIDE) return CGAL::ON_UNBOUNDED_SIDE;
+    if (side == CGAL::ON_ORIENTED_BOUNDARY) on_boundary = true;
+  }
+  return on_boundary ? CGAL::ON_BOUNDARY : CGAL::ON_BOUNDED_SIDE;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,343 @@
+#include "penumbra/scene/load_scene.h"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "json_cursor.h"
+#include "penumbra/geometry/geometry_error.h"
+#include "penumbra/input_error.h"
+#include "penumbra/scene/mesh_file.h"
+#include "sphere_points.h"
+
+namespace penumbra {
+namespace {
+
+using detail::JsonCursor;
+
+constexpr int kDefaultSphereSegments = 16;
+
+std::vector<Point3> exact_points(const std::vector<Vec3d>& points) {
+  std::vector<Point3> result;
+  for (const Vec3d& p : points) result.push_back(to_exact(p));
+  return result;
+}
+
+// runs a geometry construction, reporting its failure at the cursor's path (and at
+// the offending point's index when the construction names one).
+template <typename Build>
+ConvexPolyhedron build_solid(const JsonCursor& where, Build build) {
+  try {
+    return build();
+  } catch (const GeometryError& e) {
+    if (e.index() >= 0) where.at(static_cast<std::size_t>(e.index())).fail(e.what());
+    where.fail(e.what());
+  }
+}
+
+Vec3d unit(const Vec3d& v) {
+  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return {v[0] / length, v[1] / length, v[2] / length};
+}
+
+double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+Vec3d cross(const Vec3d& a, const Vec3d& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+bool parallel(const Vec3d& a, const Vec3d& b) {
+  const Vector3 c = CGAL::cross_product(to_exact_vector(a), to_exact_vector(b));
+  return c == CGAL::NULL_VECTOR;
+}
+
+class SceneReader {
+ public:
+  SceneReader(Scene& scene, std::string file) : scene_(scene), file_(std::move(file)) {}
+
+  void read(const nlohmann::json& document) {
+    const JsonCursor root(document, "", file_, &scene_.warnings);
+    root.require_object();
+    root.warn_unknown_keys({"penumbra", "materials", "objects", "lights", "camera"});
+    const JsonCursor version = root.at("penumbra");
+    if (!version.value().is_number_integer() || version.value().get<long>() != 1)
+      version.fail("unsupported scene format version " + version.value().dump() + " (expected 1)");
+
+    Material default_material;
+    default_material.name = "default";
+    scene_.materials.push_back(default_material);
+    if (const auto materials = root.find("materials"))
+      for (const auto& [name, cursor] : materials->members()) read_material(name, cursor);
+
+    if (const auto objects = root.find("objects"))
+      for (const JsonCursor& object : objects->elements()) read_object(object);
+    if (const auto lights = root.find("lights"))
+      for (const JsonCursor& light : lights->elements()) read_light(light);
+    if (const auto camera = root.find("camera")) read_camera(*camera);
+  }
+
+ private:
+  void read_material(const std::string& name, const JsonCursor& cursor) {
+    cursor.require_object();
+    cursor.warn_unknown_keys({"reflectance", "color", "specular", "shininess", "reflect",
+                              "transmit", "ior", "roughness"});
+    Material m;
+    m.name = name;
+    if (auto c = cursor.find("reflectance")) m.reflectance = c->number_in(0, 1);
+    if (auto c = cursor.find("color")) {
+      const Vec3d rgb = c->vec3();
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (rgb[i] < 0 || rgb[i] > 1) c->at(i).fail("a colour channel must lie in [0, 1]");
+        m.color[i] = rgb[i];
+      }
+    }
+    if (auto c = cursor.find("specular")) m.specular = c->number_in(0, 1);
+    if (auto c = cursor.find("shininess")) m.shininess = c->non_negative_number();
+    if (auto c = cursor.find("reflect")) m.reflect = c->number_in(0, 1);
+    if (auto c = cursor.find("transmit")) m.transmit = c->number_in(0, 1);
+    if (auto c = cursor.find("ior")) m.ior = c->positive_number();
+    if (auto c = cursor.find("roughness")) m.roughness = c->number_in(0, 1);
+    scene_.materials.push_back(m);
+  }
+
+  std::size_t material_index(const JsonCursor& cursor) const {
+    const std::string name = cursor.string();
+    for (std::size_t i = 1; i < scene_.materials.size(); ++i)
+      if (scene_.materials[i].name == name) return i;
+    if (name == "default") return 0;
+    cursor.fail("unknown material \"" + name + "\"");
+  }
+
+  void claim_name(const JsonCursor& where, const std::string& name, std::set<std::string>& taken) {
+    if (name.empty()) where.fail("a name must not be empty");
+    if (name.find('#') != std::string::npos)
+      where.fail("names must not contain '#' (reserved for the parts of a mesh)");
+    if (!taken.insert(name).second) where.fail("duplicate name \"" + name + "\"");
+  }
+
+  void read_object(const JsonCursor& cursor) {
+    cursor.require_object();
+    static const char* kinds[] = {"box", "convex", "polygon", "mesh", "sphere"};
+    std::string kind;
+    for (const char* k : kinds) {
+      if (!cursor.has(k)) continue;
+      if (!kind.empty()) cursor.fail("an object has one shape, found both \"" + kind + "\" and \"" + k + "\"");
+      kind = k;
+    }
+    if (kind.empty()) cursor.fail("an object needs one of \"box\", \"convex\", \"polygon\", \"mesh\", \"sphere\"");
+    cursor.warn_unknown_keys({"name", "material", "box", "convex", "polygon", "mesh", "sphere", "segments"});
+
+    Object object;
+    object.kind = kind;
+    object.json_path = cursor.path();
+    object.name = cursor.has("name") ? cursor.at("name").string()
+                                     : kind + std::to_string(scene_.objects.size());
+    claim_name(cursor.has("name") ? cursor.at("name") : cursor, object.name, object_names_);
+    object.material = cursor.has("material") ? material_index(cursor.at("material")) : 0;
+
+    const JsonCursor shape = cursor.at(kind.c_str());
+    if (kind == "box") {
+      shape.require_object();
+      shape.warn_unknown_keys({"min", "max"});
+      const Vec3d low = shape.at("min").vec3();
+      const Vec3d high = shape.at("max").vec3();
+      for (int i = 0; i < 3; ++i)
+        if (!(low[i] < high[i])) shape.at("max").fail("each coordinate of max must exceed min");
+      std::vector<Point3> corners;
+      for (int k = 0; k < 8; ++k)
+        corners.push_back(Point3((k & 1) ? high[0] : low[0], (k & 2) ? high[1] : low[1],
+                                 (k & 4) ? high[2] : low[2]));
+      object.solid = ConvexPolyhedron::hull(corners);
+    } else if (kind == "convex") {
+      const auto points = exact_points(shape.points(4));
+      object.solid = build_solid(shape, [&] { return ConvexPolyhedron::hull(points); });
+    } else if (kind == "polygon") {
+      const auto points = exact_points(shape.points(3));
+      object.solid = build_solid(shape, [&] { return ConvexPolyhedron::flat_polygon(points); });
+    } else if (kind == "sphere") {
+      shape.require_object();
+      shape.warn_unknown_keys({"center", "radius", "segments"});
+      Sphere sphere{shape.at("center").vec3(), shape.at("radius").positive_number(),
+                    kDefaultSphereSegments};
+      if (auto s = shape.find("segments")) {
+        sphere.segments = s->positive_integer();
+        if (sphere.segments < 4) s->fail("a sphere needs at least 4 segments");
+      }
+      object.solid = ConvexPolyhedron::hull(
+          exact_points(detail::sphere_points(sphere.center, sphere.radius, sphere.segments)));
+      object.sphere = sphere;
+    } else {
+      read_mesh_object(shape, std::move(object));
+      return;
+    }
+    scene_.objects.push_back(std::move(object));
+  }
+
+  void read_mesh_object(const JsonCursor& shape, Object object) {
+    const std::filesystem::path path = scene_.file.parent_path() / shape.string();
+    std::vector<ConvexPolyhedron> parts;
+    try {
+      parts = convex_parts(read_mesh(path));
+    } catch (const InputError& e) {
+      // Name both the mesh file's problem and where the scene referenced it.
+      shape.fail(e.what());
+    }
+    if (parts.empty()) shape.fail("the mesh " + path.string() + " has no faces");
+    if (parts.size() == 1) {
+      object.solid = std::move(parts.front());
+      scene_.objects.push_back(std::move(object));
+      return;
+    }
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      Object part = object;
+      part.name = object.name + "#" + std::to_string(k);
+      part.solid = std::move(parts[k]);
+      scene_.objects.push_back(std::move(part));
+    }
+  }
+
+  void read_light(const JsonCursor& cursor) {
+    cursor.require_object();
+    static const char* kinds[] = {"point", "linear", "directional"};
+    std::string kind;
+    for (const char* k : kinds) {
+      if (!cursor.has(k)) continue;
+      if (!kind.empty()) cursor.fail("a light has one kind, found both \"" + kind + "\" and \"" + k + "\"");
+      kind = k;
+    }
+    if (kind.empty()) cursor.fail("a light needs one of \"point\", \"linear\", \"directional\"");
+
+    Light light;
+    light.json_path = cursor.path();
+    light.name = cursor.has("name") ? cursor.at("name").string()
+                                    : kind + std::to_string(scene_.lights.size());
+    claim_name(cursor.has("name") ? cursor.at("name") : cursor, light.name, light_names_);
+
+    if (kind == "point") {
+      cursor.warn_unknown_keys({"name", "point", "candela", "lid", "axis", "c0"});
+      light.source = read_point_light(cursor);
+    } else if (kind == "linear") {
+      cursor.warn_unknown_keys({"name", "linear", "candela_per_metre"});
+      const JsonCursor ends = cursor.at("linear");
+      const auto points = ends.points(2);
+      if (points.size() != 2) ends.fail("a linear source has exactly 2 end points");
+      if (points[0] == points[1]) ends.fail("a linear source must not have zero length");
+      light.source = LinearLight{points[0], points[1], cursor.at("candela_per_metre").non_negative_number()};
+    } else {
+      cursor.warn_unknown_keys({"name", "directional", "illuminance"});
+      light.source = DirectionalLight{cursor.at("directional").direction(),
+                                      cursor.at("illuminance").non_negative_number()};
+    }
+    scene_.lights.push_back(std::move(light));
+  }
+
+  PointLight read_point_light(const JsonCursor& cursor) const {
+    PointLight light;
+    light.position = cursor.at("point").vec3();
+    if (cursor.has("candela") == cursor.has("lid"))
+      cursor.fail("a point light needs exactly one of \"candela\" (isotropic) or \"lid\"");
+    if (auto candela = cursor.find("candela")) {
+      light.distribution = photometry::make_isotropic(candela->non_negative_number());
+    } else {
+      const JsonCursor lid = cursor.at("lid");
+      light.lid = lid.value();
+      light.distribution = photometry::make_distribution(
+          lid.value(), photometry::SpecContext{file_, lid.path(), scene_.file.parent_path()});
+    }
+    if (auto axis = cursor.find("axis")) light.axis = unit(axis->direction());
+    if (auto c0 = cursor.find("c0")) {
+      const Vec3d raw = c0->direction();
+      if (parallel(raw, light.axis)) c0->fail("c0 must not be parallel to the axis");
+      // Keep the part of c0 orthogonal to the axis: the C = 0 half-plane it names.
+      const double along = dot(raw, light.axis);
+      light.c0 = unit({raw[0] - along * light.axis[0], raw[1] - along * light.axis[1],
+                       raw[2] - along * light.axis[2]});
+    } else {
+      // Default C = 0 direction: world x made orthogonal to the axis (world y when
+      // the axis is along x).
+      const Vec3d x{1, 0, 0};
+      light.c0 = unit(cross(cross(light.axis, parallel(x, light.axis) ? Vec3d{0, 1, 0} : x), light.axis));
+    }
+    return light;
+  }
+
+  void read_camera(const JsonCursor& cursor) {
+    cursor.require_object();
+    cursor.warn_unknown_keys({"eye", "target", "up", "fov_deg", "width", "height"});
+    Camera camera;
+    camera.eye = cursor.at("eye").vec3();
+    camera.target = cursor.at("target").vec3();
+    if (camera.eye == camera.target) cursor.at("target").fail("the target must differ from the eye");
+    if (auto up = cursor.find("up")) camera.up = up->direction();
+    const Vec3d view{camera.target[0] - camera.eye[0], camera.target[1] - camera.eye[1],
+                     camera.target[2] - camera.eye[2]};
+    if (parallel(view, camera.up))
+      (cursor.has("up") ? cursor.at("up") : cursor).fail("up must not be parallel to the view direction");
+    if (auto fov = cursor.find("fov_deg")) {
+      camera.fov_deg = fov->number();
+      if (!(camera.fov_deg > 0 && camera.fov_deg < 180)) fov->fail("fov_deg must lie in (0, 180)");
+    }
+    if (auto width = cursor.find("width")) camera.width = width->positive_integer();
+    if (auto height = cursor.find("height")) camera.height = height->positive_integer();
+    scene_.camera = camera;
+  }
+
+  Scene& scene_;
+  std::string file_;
+  std::set<std::string> object_names_;
+  std::set<std::string> light_names_;
+};
+
+// returns "line L, column C" of a byte offset in text.
+std::string line_and_column(const std::string& text, std::size_t byte) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
+  nlohmann::json document;
+  try {
+    document = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(file.string(), line_and_column(text, e.byte == 0 ? 0 : e.byte - 1),
+                     std::string("malformed JSON: ") + e.what());
+  }
+  Scene scene;
+  scene.file = file;
+  SceneReader(scene, file.string()).read(document);
+  return scene;
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string(), "", "cannot open the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path.string(), "", "cannot read the scene file");
+  return parse_scene(text.str(), path);
+}
+
+const Object* Scene::find_object(const std::string& name) const {
+  for (const Object& object : objects)
+    if (object.name == name) return &object;
+  return nullptr;
+}
+
+const Light* Scene::find_light(const std::string& name) const {
+  for (const Light& light : lights)
+    if (light.name == name) return &light;
+  return nullptr;
+}
+
+}  // namespace penumbra

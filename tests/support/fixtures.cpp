@@ -1,0 +1,51 @@
+#include "support/fixtures.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace penumbra::test {
+
+std::filesystem::path source_dir() {
+  if (const char* dir = std::getenv("PENUMBRA_SOURCE_DIR")) return dir;
+  return PENUMBRA_SOURCE_DIR;
+}
+
+std::filesystem::path fixture(const std::string& relative) {
+  return source_dir() / "fixtures" / relative;
+}
+
+std::filesystem::path shared_photometry(const std::string& relative) {
+  return source_dir().parent_path() / "shared" / "data" / "photometry" / relative;
+}
+
+std::filesystem::path penumbra_binary() {
+  if (const char* binary = std::getenv("PENUMBRA_BINARY")) return binary;
+  return "penumbra";
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::filesystem::path scratch_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("penumbra-test-" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+CommandResult run_penumbra(const std::string& arguments) {
+  const auto dir = scratch_dir("command");
+  const std::string command = "'" + penumbra_binary().string() + "' " + arguments + " >'" +
+                              (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
+  const int raw = std::system(command.c_str());
+  const int status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return {status, read_text(dir / "out"), read_text(dir / "err")};
+}
+
+}  // namespace penumbra::test
