@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "penumbra/input_error.h"
 
@@ -9,6 +10,12 @@ namespace penumbra::detail {
 namespace {
 
 const char* type_name(const nlohmann::json& value) { return value.type_name(); }
+
+std::string format_bound(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
 
 }  // namespace
 
@@ -74,8 +81,7 @@ double JsonCursor::non_negative_number() const {
 double JsonCursor::number_in(double low, double high) const {
   const double x = number();
   if (x < low || x > high)
-    fail("must lie in [" + nlohmann::json(low).dump() + ", " + nlohmann::json(high).dump() +
-         "], found " + value_->dump());
+    fail("must lie in [" + format_bound(low) + ", " + format_bound(high) + "], found " + value_->dump());
   return x;
 }
 

@@ -242,8 +242,13 @@ class SceneReader {
     } else {
       const JsonCursor lid = cursor.at("lid");
       light.lid = lid.value();
-      light.distribution = photometry::make_distribution(
-          lid.value(), photometry::SpecContext{file_, lid.path(), scene_.file.parent_path()});
+      try {
+        light.distribution = photometry::make_distribution(
+            lid.value(), photometry::SpecContext{file_, lid.path(), scene_.file.parent_path()});
+      } catch (const InputError& e) {
+        if (e.file() == file_) throw;
+        lid.fail(e.what());  // a photometric file's problem, named where the scene refers to it
+      }
     }
     if (auto axis = cursor.find("axis")) light.axis = unit(axis->direction());
     if (auto c0 = cursor.find("c0")) {
@@ -312,6 +317,9 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(file.string(), line_and_column(text, e.byte == 0 ? 0 : e.byte - 1),
                      std::string("malformed JSON: ") + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // Numbers too large for a double (1e999) are refused while parsing, without a position.
+    throw InputError(file.string(), "", std::string("malformed JSON: ") + e.what());
   }
   Scene scene;
   scene.file = file;
