@@ -44,7 +44,8 @@ ConvexPolyhedron ConvexPolyhedron::hull(const std::vector<Point3>& points) {
   for (auto f : mesh.faces()) {
     Triangle t;
     int k = 0;
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t.corners[k++] = mesh.point(v);
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      t.corners[k++] = mesh.point(v);
     t.normal = CGAL::cross_product(t.corners[1] - t.corners[0], t.corners[2] - t.corners[0]);
     triangles.push_back(t);
   }

@@ -8,12 +8,11 @@ namespace penumbra::detail {
 std::vector<int> convex_hull_2(const std::vector<Point2>& points) {
   std::vector<int> order(points.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return CGAL::compare_xy(points[a], points[b]) == CGAL::SMALLER;
-  });
-  order.erase(std::unique(order.begin(), order.end(),
-                          [&](int a, int b) { return points[a] == points[b]; }),
-              order.end());
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return CGAL::compare_xy(points[a], points[b]) == CGAL::SMALLER; });
+  order.erase(
+      std::unique(order.begin(), order.end(), [&](int a, int b) { return points[a] == points[b]; }),
+      order.end());
   if (order.size() < 3) return order;
 
   // Lower hull left to right, then upper hull right to left; a point is kept only

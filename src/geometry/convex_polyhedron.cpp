@@ -17,8 +17,7 @@ bool point_less(const Point3& a, const Point3& b) {
 
 // rotates a cycle so that it starts at its lexicographically smallest point.
 void start_at_smallest(std::vector<Point3>& cycle) {
-  std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end(), point_less),
-              cycle.end());
+  std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end(), point_less), cycle.end());
 }
 
 }  // namespace
@@ -49,7 +48,8 @@ ConvexPolyhedron ConvexPolyhedron::from_faces(std::vector<std::vector<Point3>> f
   for (std::size_t f = 0; f < solid.faces_.size(); ++f) {
     Face& face = solid.faces_[f];
     for (const Point3& p : face.vertices) {
-      const auto it = std::lower_bound(solid.vertices_.begin(), solid.vertices_.end(), p, point_less);
+      const auto it =
+          std::lower_bound(solid.vertices_.begin(), solid.vertices_.end(), p, point_less);
       face.vertex_ids.push_back(static_cast<int>(it - solid.vertices_.begin()));
     }
     const std::size_t n = face.vertex_ids.size();

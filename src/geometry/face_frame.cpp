@@ -13,7 +13,11 @@ Vec3d unit(const Vector3& v) {
 
 }  // namespace
 
-Vec3d FaceFrame::unit_u() const { return unit(u_); }
-Vec3d FaceFrame::unit_v() const { return unit(v_); }
+Vec3d FaceFrame::unit_u() const {
+  return unit(u_);
+}
+Vec3d FaceFrame::unit_v() const {
+  return unit(v_);
+}
 
 }  // namespace penumbra

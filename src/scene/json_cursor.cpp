@@ -9,7 +9,9 @@
 namespace penumbra::detail {
 namespace {
 
-const char* type_name(const nlohmann::json& value) { return value.type_name(); }
+const char* type_name(const nlohmann::json& value) {
+  return value.type_name();
+}
 
 std::string format_bound(double x) {
   std::ostringstream out;
@@ -19,7 +21,9 @@ std::string format_bound(double x) {
 
 }  // namespace
 
-void JsonCursor::fail(const std::string& message) const { throw InputError(*file_, path_, message); }
+void JsonCursor::fail(const std::string& message) const {
+  throw InputError(*file_, path_, message);
+}
 
 void JsonCursor::require_object() const {
   if (!value_->is_object()) fail(std::string("expected an object, found ") + type_name(*value_));
@@ -54,8 +58,9 @@ std::vector<std::pair<std::string, JsonCursor>> JsonCursor::members() const {
   require_object();
   std::vector<std::pair<std::string, JsonCursor>> result;
   for (auto it = value_->begin(); it != value_->end(); ++it)
-    result.emplace_back(it.key(), JsonCursor(it.value(), path_.empty() ? it.key() : path_ + "." + it.key(),
-                                             *file_, warnings_));
+    result.emplace_back(
+        it.key(), JsonCursor(it.value(), path_.empty() ? it.key() : path_ + "." + it.key(), *file_,
+                             warnings_));
   return result;
 }
 
@@ -81,7 +86,8 @@ double JsonCursor::non_negative_number() const {
 double JsonCursor::number_in(double low, double high) const {
   const double x = number();
   if (x < low || x > high)
-    fail("must lie in [" + format_bound(low) + ", " + format_bound(high) + "], found " + value_->dump());
+    fail("must lie in [" + format_bound(low) + ", " + format_bound(high) + "], found " +
+         value_->dump());
   return x;
 }
 
@@ -93,7 +99,8 @@ int JsonCursor::positive_integer() const {
 }
 
 bool JsonCursor::boolean() const {
-  if (!value_->is_boolean()) fail(std::string("expected true or false, found ") + type_name(*value_));
+  if (!value_->is_boolean())
+    fail(std::string("expected true or false, found ") + type_name(*value_));
   return value_->get<bool>();
 }
 

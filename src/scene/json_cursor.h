@@ -39,15 +39,15 @@ class JsonCursor {
   std::vector<std::pair<std::string, JsonCursor>> members() const;
 
   void require_object() const;
-  double number() const;            // finite
-  double positive_number() const;   // finite, > 0
+  double number() const;           // finite
+  double positive_number() const;  // finite, > 0
   double non_negative_number() const;
   double number_in(double low, double high) const;  // finite, low <= x <= high
   int positive_integer() const;
   bool boolean() const;
   std::string string() const;
-  Vec3d vec3() const;               // [x, y, z], finite
-  Vec3d direction() const;          // [x, y, z], finite, not the zero vector (as written)
+  Vec3d vec3() const;       // [x, y, z], finite
+  Vec3d direction() const;  // [x, y, z], finite, not the zero vector (as written)
   std::vector<Vec3d> points(std::size_t at_least) const;
 
   // records a warning for every member whose key is not in known.

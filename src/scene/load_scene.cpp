@@ -41,7 +41,9 @@ Vec3d unit(const Vec3d& v) {
   return {v[0] / length, v[1] / length, v[2] / length};
 }
 
-double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot(const Vec3d& a, const Vec3d& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 Vec3d cross(const Vec3d& a, const Vec3d& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -122,11 +124,14 @@ class SceneReader {
     std::string kind;
     for (const char* k : kinds) {
       if (!cursor.has(k)) continue;
-      if (!kind.empty()) cursor.fail("an object has one shape, found both \"" + kind + "\" and \"" + k + "\"");
+      if (!kind.empty())
+        cursor.fail("an object has one shape, found both \"" + kind + "\" and \"" + k + "\"");
       kind = k;
     }
-    if (kind.empty()) cursor.fail("an object needs one of \"box\", \"convex\", \"polygon\", \"mesh\", \"sphere\"");
-    cursor.warn_unknown_keys({"name", "material", "box", "convex", "polygon", "mesh", "sphere", "segments"});
+    if (kind.empty())
+      cursor.fail("an object needs one of \"box\", \"convex\", \"polygon\", \"mesh\", \"sphere\"");
+    cursor.warn_unknown_keys(
+        {"name", "material", "box", "convex", "polygon", "mesh", "sphere", "segments"});
 
     Object object;
     object.kind = kind;
@@ -203,7 +208,8 @@ class SceneReader {
     std::string kind;
     for (const char* k : kinds) {
       if (!cursor.has(k)) continue;
-      if (!kind.empty()) cursor.fail("a light has one kind, found both \"" + kind + "\" and \"" + k + "\"");
+      if (!kind.empty())
+        cursor.fail("a light has one kind, found both \"" + kind + "\" and \"" + k + "\"");
       kind = k;
     }
     if (kind.empty()) cursor.fail("a light needs one of \"point\", \"linear\", \"directional\"");
@@ -223,7 +229,8 @@ class SceneReader {
       const auto points = ends.points(2);
       if (points.size() != 2) ends.fail("a linear source has exactly 2 end points");
       if (points[0] == points[1]) ends.fail("a linear source must not have zero length");
-      light.source = LinearLight{points[0], points[1], cursor.at("candela_per_metre").non_negative_number()};
+      light.source =
+          LinearLight{points[0], points[1], cursor.at("candela_per_metre").non_negative_number()};
     } else {
       cursor.warn_unknown_keys({"name", "directional", "illuminance"});
       light.source = DirectionalLight{cursor.at("directional").direction(),
@@ -262,7 +269,8 @@ class SceneReader {
       // Default C = 0 direction: world x made orthogonal to the axis (world y when
       // the axis is along x).
       const Vec3d x{1, 0, 0};
-      light.c0 = unit(cross(cross(light.axis, parallel(x, light.axis) ? Vec3d{0, 1, 0} : x), light.axis));
+      light.c0 =
+          unit(cross(cross(light.axis, parallel(x, light.axis) ? Vec3d{0, 1, 0} : x), light.axis));
     }
     return light;
   }
@@ -273,12 +281,14 @@ class SceneReader {
     Camera camera;
     camera.eye = cursor.at("eye").vec3();
     camera.target = cursor.at("target").vec3();
-    if (camera.eye == camera.target) cursor.at("target").fail("the target must differ from the eye");
+    if (camera.eye == camera.target)
+      cursor.at("target").fail("the target must differ from the eye");
     if (auto up = cursor.find("up")) camera.up = up->direction();
     const Vec3d view{camera.target[0] - camera.eye[0], camera.target[1] - camera.eye[1],
                      camera.target[2] - camera.eye[2]};
     if (parallel(view, camera.up))
-      (cursor.has("up") ? cursor.at("up") : cursor).fail("up must not be parallel to the view direction");
+      (cursor.has("up") ? cursor.at("up") : cursor)
+          .fail("up must not be parallel to the view direction");
     if (auto fov = cursor.find("fov_deg")) {
       camera.fov_deg = fov->number();
       if (!(camera.fov_deg > 0 && camera.fov_deg < 180)) fov->fail("fov_deg must lie in (0, 180)");

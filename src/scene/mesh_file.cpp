@@ -43,7 +43,8 @@ class LineReader {
     if (!(fields >> token)) fail(std::string("missing ") + what);
     char* end = nullptr;
     const double x = std::strtod(token.c_str(), &end);
-    if (end == token.c_str() || *end != '\0') fail(std::string("expected a number for ") + what + ", found \"" + token + "\"");
+    if (end == token.c_str() || *end != '\0')
+      fail(std::string("expected a number for ") + what + ", found \"" + token + "\"");
     if (!std::isfinite(x)) fail(std::string("the ") + what + " is not finite");
     return x;
   }
@@ -53,7 +54,8 @@ class LineReader {
     if (!(fields >> token)) fail(std::string("missing ") + what);
     char* end = nullptr;
     const long x = std::strtol(token.c_str(), &end, 10);
-    if (end == token.c_str() || *end != '\0') fail(std::string("expected an integer for ") + what + ", found \"" + token + "\"");
+    if (end == token.c_str() || *end != '\0')
+      fail(std::string("expected an integer for ") + what + ", found \"" + token + "\"");
     return x;
   }
 
@@ -95,8 +97,8 @@ MeshFile read_obj(const std::filesystem::path& path) {
         const long index = std::strtol(corner.c_str(), &end, 10);
         if (end == corner.c_str() || (*end != '\0' && *end != '/') || index == 0)
           reader.fail("bad face corner \"" + corner + "\"");
-        face.push_back(static_cast<int>(index > 0 ? index - 1
-                                                  : static_cast<long>(mesh.vertices.size()) + index));
+        face.push_back(static_cast<int>(
+            index > 0 ? index - 1 : static_cast<long>(mesh.vertices.size()) + index));
       }
       check_face(reader, face, mesh.vertices.size());
       mesh.faces.push_back(face);
@@ -130,7 +132,8 @@ MeshFile read_off(const std::filesystem::path& path) {
     const long n = reader.integer(fields, "face size");
     if (n < 3) reader.fail("a face needs at least 3 vertices");
     std::vector<int> face;
-    for (long k = 0; k < n; ++k) face.push_back(static_cast<int>(reader.integer(fields, "vertex index")));
+    for (long k = 0; k < n; ++k)
+      face.push_back(static_cast<int>(reader.integer(fields, "vertex index")));
     check_face(reader, face, mesh.vertices.size());
     mesh.faces.push_back(face);
     mesh.face_lines.push_back(reader.line());
@@ -151,7 +154,8 @@ MeshFile read_mesh(const std::filesystem::path& path) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".obj") return read_obj(path);
   if (extension == ".off") return read_off(path);
-  throw InputError(path.string(), "", "unknown mesh format \"" + extension + "\" (expected .obj or .off)");
+  throw InputError(path.string(), "",
+                   "unknown mesh format \"" + extension + "\" (expected .obj or .off)");
 }
 
 std::vector<ConvexPolyhedron> convex_parts(const MeshFile& mesh) {
@@ -181,7 +185,8 @@ std::vector<ConvexPolyhedron> convex_parts(const MeshFile& mesh) {
   for (Component& component : components) {
     if (component.faces.empty()) continue;
     const auto fail = [&](std::size_t face, const std::string& message) {
-      throw InputError(mesh.path.string(), "line " + std::to_string(mesh.face_lines[face]), message);
+      throw InputError(mesh.path.string(), "line " + std::to_string(mesh.face_lines[face]),
+                       message);
     };
     ConvexPolyhedron solid;
     try {
@@ -192,11 +197,14 @@ std::vector<ConvexPolyhedron> convex_parts(const MeshFile& mesh) {
     // Exact convexity: each mesh face must lie in the plane of a face of the hull.
     for (std::size_t f : component.faces) {
       const auto& corners = mesh.faces[f];
-      const bool on_hull = std::any_of(solid.faces().begin(), solid.faces().end(), [&](const Face& face) {
-        return std::all_of(corners.begin(), corners.end(),
-                           [&](int index) { return face.plane.has_on(mesh.vertices[index]); });
-      });
-      if (!on_hull) fail(f, "the mesh component of this face is not convex (the face is not on its convex hull)");
+      const bool on_hull =
+          std::any_of(solid.faces().begin(), solid.faces().end(), [&](const Face& face) {
+            return std::all_of(corners.begin(), corners.end(),
+                               [&](int index) { return face.plane.has_on(mesh.vertices[index]); });
+          });
+      if (!on_hull)
+        fail(f,
+             "the mesh component of this face is not convex (the face is not on its convex hull)");
     }
     parts.push_back(std::move(solid));
   }

@@ -53,11 +53,14 @@ BOOST_AUTO_TEST_CASE(info_prints_counts_and_exact_planes) {
 BOOST_AUTO_TEST_CASE(bad_scene_reports_file_and_path_and_exits_2) {
   const auto dir = penumbra::test::scratch_dir("cli-bad");
   const auto scene = dir / "bad.json";
-  std::ofstream(scene) << R"({"penumbra": 1, "lights": [{"linear": [[0,0,1],[0,0,1]], "candela_per_metre": 5}]})";
+  std::ofstream(scene)
+      << R"({"penumbra": 1, "lights": [{"linear": [[0,0,1],[0,0,1]], "candela_per_metre": 5}]})";
   const auto result = run_penumbra("info '" + scene.string() + "'");
   BOOST_TEST(result.status == 2);
   BOOST_TEST(result.out.empty());
-  BOOST_TEST(contains(result.err, scene.string() + ": lights[0].linear: a linear source must not have zero length"));
+  BOOST_TEST(
+      contains(result.err,
+               scene.string() + ": lights[0].linear: a linear source must not have zero length"));
 }
 
 BOOST_AUTO_TEST_CASE(unbuilt_verbs_say_so_and_exit_2) {

@@ -43,18 +43,21 @@ void check_well_formed(const ConvexPolyhedron& solid) {
       const int neighbour = face.neighbours[k];
       BOOST_TEST_REQUIRE(neighbour >= 0);
       const Face& other = solid.faces()[neighbour];
-      const auto back = std::find(other.neighbours.begin(), other.neighbours.end(), static_cast<int>(f));
+      const auto back =
+          std::find(other.neighbours.begin(), other.neighbours.end(), static_cast<int>(f));
       BOOST_TEST((back != other.neighbours.end()));
     }
     for (std::size_t v = 0; v < solid.vertices().size(); ++v) {
-      const bool on_face = std::count(face.vertex_ids.begin(), face.vertex_ids.end(), static_cast<int>(v)) > 0;
+      const bool on_face =
+          std::count(face.vertex_ids.begin(), face.vertex_ids.end(), static_cast<int>(v)) > 0;
       BOOST_TEST(face.plane.oriented_side(solid.vertices()[v]) ==
                  (on_face ? CGAL::ON_ORIENTED_BOUNDARY : CGAL::ON_NEGATIVE_SIDE));
     }
     const FaceFrame& frame = face.frame;
     BOOST_TEST(frame.origin() == face.vertices[0]);
     BOOST_TEST(frame.u() * frame.v() == 0);
-    BOOST_TEST((CGAL::cross_product(CGAL::cross_product(frame.u(), frame.v()), face.normal()) == CGAL::NULL_VECTOR));
+    BOOST_TEST((CGAL::cross_product(CGAL::cross_product(frame.u(), frame.v()), face.normal()) ==
+                CGAL::NULL_VECTOR));
     BOOST_TEST(CGAL::cross_product(frame.u(), frame.v()) * face.normal() > 0);
     for (const Point3& p : face.vertices) BOOST_TEST(frame.to_world(frame.to_frame(p)) == p);
   }
@@ -75,7 +78,8 @@ std::vector<Plane3> supporting_planes(const std::vector<Point3>& points) {
         const bool supporting = std::none_of(points.begin(), points.end(), [&](const Point3& p) {
           return plane.oriented_side(p) == CGAL::ON_POSITIVE_SIDE;
         });
-        const bool known = std::any_of(planes.begin(), planes.end(), [&](const Plane3& q) { return q == plane; });
+        const bool known =
+            std::any_of(planes.begin(), planes.end(), [&](const Plane3& q) { return q == plane; });
         if (supporting && !known) planes.push_back(plane);
       }
   return planes;
@@ -121,22 +125,23 @@ BOOST_AUTO_TEST_CASE(coplanar_collinear_duplicate_and_interior_points_merge_away
 }
 
 BOOST_AUTO_TEST_CASE(triangular_prism_has_two_triangles_and_three_rectangles) {
-  const std::vector<Point3> points{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 3}, {2, 0, 3}, {0, 2, 3}};
+  const std::vector<Point3> points{{0, 0, 0}, {2, 0, 0}, {0, 2, 0},
+                                   {0, 0, 3}, {2, 0, 3}, {0, 2, 3}};
   const auto prism = ConvexPolyhedron::hull(points);
   check_well_formed(prism);
   std::multiset<std::size_t> sizes;
   for (const Face& face : prism.faces()) sizes.insert(face.vertices.size());
   BOOST_TEST((sizes == std::multiset<std::size_t>{3, 3, 4, 4, 4}));
   // The slanted face x + y = 2 carries the four points with x + y = 2.
-  const auto slanted = std::find_if(prism.faces().begin(), prism.faces().end(), [](const Face& f) {
-    return f.plane == Plane3(1, 1, 0, -2);
-  });
+  const auto slanted = std::find_if(prism.faces().begin(), prism.faces().end(),
+                                    [](const Face& f) { return f.plane == Plane3(1, 1, 0, -2); });
   BOOST_TEST_REQUIRE((slanted != prism.faces().end()));
   BOOST_TEST(slanted->vertices.size() == 4u);
 }
 
 BOOST_AUTO_TEST_CASE(octahedron_has_eight_triangles) {
-  const std::vector<Point3> points{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const std::vector<Point3> points{{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
   const auto octahedron = ConvexPolyhedron::hull(points);
   check_well_formed(octahedron);
   BOOST_TEST(octahedron.faces().size() == 8u);
@@ -144,7 +149,8 @@ BOOST_AUTO_TEST_CASE(octahedron_has_eight_triangles) {
   for (const Face& face : octahedron.faces()) {
     BOOST_TEST(face.vertices.size() == 3u);
     const Vector3 n = face.normal();
-    BOOST_TEST(face.plane == Plane3(n.x() > 0 ? 1 : -1, n.y() > 0 ? 1 : -1, n.z() > 0 ? 1 : -1, -1));
+    BOOST_TEST(face.plane ==
+               Plane3(n.x() > 0 ? 1 : -1, n.y() > 0 ? 1 : -1, n.z() > 0 ? 1 : -1, -1));
   }
 }
 
@@ -155,7 +161,8 @@ BOOST_AUTO_TEST_CASE(random_points_match_brute_force_supporting_planes) {
   std::uniform_int_distribution<int> coordinate(-3, 3);
   for (int trial = 0; trial < 20; ++trial) {
     std::vector<Point3> points;
-    for (int i = 0; i < 14; ++i) points.emplace_back(coordinate(random), coordinate(random), coordinate(random));
+    for (int i = 0; i < 14; ++i)
+      points.emplace_back(coordinate(random), coordinate(random), coordinate(random));
     ConvexPolyhedron solid;
     try {
       solid = ConvexPolyhedron::hull(points);
@@ -166,7 +173,8 @@ BOOST_AUTO_TEST_CASE(random_points_match_brute_force_supporting_planes) {
     const auto planes = supporting_planes(points);
     BOOST_TEST(planes.size() == solid.faces().size());
     for (const Face& face : solid.faces())
-      BOOST_TEST(std::any_of(planes.begin(), planes.end(), [&](const Plane3& p) { return p == face.plane; }));
+      BOOST_TEST(std::any_of(planes.begin(), planes.end(),
+                             [&](const Plane3& p) { return p == face.plane; }));
   }
 }
 
@@ -174,7 +182,8 @@ BOOST_AUTO_TEST_CASE(input_order_does_not_change_the_result) {
   std::mt19937 random(7);  // fixed: the shuffles are part of the test's definition
   std::uniform_real_distribution<double> coordinate(-1, 1);
   std::vector<Point3> points;
-  for (int i = 0; i < 40; ++i) points.emplace_back(coordinate(random), coordinate(random), coordinate(random));
+  for (int i = 0; i < 40; ++i)
+    points.emplace_back(coordinate(random), coordinate(random), coordinate(random));
   for (const Point3& corner : cube_corners(-1, 1)) points.push_back(corner);
   const auto reference = ConvexPolyhedron::hull(points);
   for (int shuffle = 0; shuffle < 5; ++shuffle) {
@@ -191,8 +200,10 @@ BOOST_AUTO_TEST_CASE(input_order_does_not_change_the_result) {
 }
 
 BOOST_AUTO_TEST_CASE(coplanar_or_too_few_points_are_refused) {
-  BOOST_CHECK_THROW(ConvexPolyhedron::hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 3, 0}}), GeometryError);
-  BOOST_CHECK_THROW(ConvexPolyhedron::hull({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}}), GeometryError);
+  BOOST_CHECK_THROW(ConvexPolyhedron::hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 3, 0}}),
+                    GeometryError);
+  BOOST_CHECK_THROW(ConvexPolyhedron::hull({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}}),
+                    GeometryError);
   BOOST_CHECK_THROW(ConvexPolyhedron::hull({{0, 0, 0}, {0, 0, 0}, {1, 0, 0}}), GeometryError);
   BOOST_CHECK_THROW(ConvexPolyhedron::hull({}), GeometryError);
 }

@@ -38,9 +38,11 @@ BOOST_AUTO_TEST_CASE(square_gives_two_opposite_faces) {
   BOOST_TEST((square.faces()[1].vertices == up));
   BOOST_TEST((square.faces()[0].vertices == down));
   for (const Face& face : square.faces())
-    for (int neighbour : face.neighbours) BOOST_TEST(neighbour == (&face == &square.faces()[0] ? 1 : 0));
+    for (int neighbour : face.neighbours)
+      BOOST_TEST(neighbour == (&face == &square.faces()[0] ? 1 : 0));
   // Reversing the input cycle changes nothing.
-  const auto reversed = ConvexPolyhedron::flat_polygon({{0, 1, 1}, {1, 1, 1}, {1, 0, 1}, {0, 0, 1}});
+  const auto reversed =
+      ConvexPolyhedron::flat_polygon({{0, 1, 1}, {1, 1, 1}, {1, 0, 1}, {0, 0, 1}});
   BOOST_TEST(reversed.faces()[0].vertices == square.faces()[0].vertices);
   BOOST_TEST(reversed.faces()[1].vertices == square.faces()[1].vertices);
 }

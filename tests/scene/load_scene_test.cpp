@@ -87,10 +87,12 @@ BOOST_AUTO_TEST_CASE(object_order_in_the_file_does_not_change_the_solids) {
   // Reversed vertex order of a convex object and a polygon gives the same faces.
   const Scene forward = parse_scene(R"({"penumbra": 1, "objects": [
       {"name": "a", "convex": [[0,0,0],[1,0,0],[0,1,0],[0,0,1],[0.25,0.25,0]]},
-      {"name": "p", "polygon": [[0,0,2],[1,0,2],[1,1,2],[0,1,2]]}]})", "forward.json");
+      {"name": "p", "polygon": [[0,0,2],[1,0,2],[1,1,2],[0,1,2]]}]})",
+                                    "forward.json");
   const Scene backward = parse_scene(R"({"penumbra": 1, "objects": [
       {"name": "a", "convex": [[0.25,0.25,0],[0,0,1],[0,1,0],[1,0,0],[0,0,0]]},
-      {"name": "p", "polygon": [[0,1,2],[1,1,2],[1,0,2],[0,0,2]]}]})", "backward.json");
+      {"name": "p", "polygon": [[0,1,2],[1,1,2],[1,0,2],[0,0,2]]}]})",
+                                     "backward.json");
   for (const char* name : {"a", "p"}) {
     const auto& f = forward.find_object(name)->solid;
     const auto& b = backward.find_object(name)->solid;

@@ -65,25 +65,28 @@ BOOST_AUTO_TEST_CASE(obj_corner_forms_and_negative_indices) {
 }
 
 BOOST_AUTO_TEST_CASE(off_counts_on_the_header_line) {
-  const auto path = write_file("inline.off", "OFF 4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
-                                             "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const auto path = write_file("inline.off",
+                               "OFF 4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                               "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   BOOST_TEST(read_mesh(path).faces.size() == 4u);
 }
 
 BOOST_AUTO_TEST_CASE(bad_meshes_name_the_line) {
   BOOST_TEST(error_location(test::fixture("meshes/notched.obj")) ==
-             "line 16: the mesh component of this face is not convex (the face is not on its convex hull)");
+             "line 16: the mesh component of this face is not convex (the face is not on its "
+             "convex hull)");
   BOOST_TEST(error_location(write_file("bad.obj", "v 0 0 0\nv 1 x 0\n")) ==
              "line 2: expected a number for y coordinate, found \"x\"");
   BOOST_TEST(error_location(write_file("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n")) ==
              "line 4: vertex index 7 is out of range");
   BOOST_TEST(error_location(write_file("short.off", "OFF\n4 4 6\n0 0 0\n1 0 0\n")) ==
              "line 4: the file ends before vertex 2");
-  BOOST_TEST(error_location(write_file("flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")).find(
-                 "line 4: the component of this face is flat") == 0);
+  BOOST_TEST(error_location(write_file("flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"))
+                 .find("line 4: the component of this face is flat") == 0);
   BOOST_TEST(error_location(write_file("nan.off", "OFF\n1 0 0\nnan 0 0\n")) ==
              "line 3: the x coordinate is not finite");
-  BOOST_TEST(error_location(write_file("mesh.stl", "solid")) == ": unknown mesh format \".stl\" (expected .obj or .off)");
+  BOOST_TEST(error_location(write_file("mesh.stl", "solid")) ==
+             ": unknown mesh format \".stl\" (expected .obj or .off)");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,9 +1,9 @@
 #include "support/fixtures.h"
 
+#include <sys/wait.h>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
 
 namespace penumbra::test {
 

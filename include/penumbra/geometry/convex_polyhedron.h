@@ -17,11 +17,11 @@
 namespace penumbra {
 
 struct Face {
-  std::vector<Point3> vertices;    // counter-clockwise seen from outside, no three collinear
-  std::vector<int> vertex_ids;     // indices into ConvexPolyhedron::vertices()
-  std::vector<int> neighbours;     // neighbours[k]: the face across edge (k, k+1)
-  Plane3 plane;                    // F(S, Q) = n.Q + d, positive on the outside (Nishita eq. 3)
-  FaceFrame frame;                 // origin = vertices[0], u along the first edge
+  std::vector<Point3> vertices;  // counter-clockwise seen from outside, no three collinear
+  std::vector<int> vertex_ids;   // indices into ConvexPolyhedron::vertices()
+  std::vector<int> neighbours;   // neighbours[k]: the face across edge (k, k+1)
+  Plane3 plane;                  // F(S, Q) = n.Q + d, positive on the outside (Nishita eq. 3)
+  FaceFrame frame;               // origin = vertices[0], u along the first edge
 
   Vector3 normal() const { return plane.orthogonal_vector(); }
 };

@@ -15,8 +15,11 @@ class FaceFrame {
   FaceFrame() = default;
   // builds the frame at origin with first axis along u_direction, in the plane of normal.
   FaceFrame(const Point3& origin, const Vector3& u_direction, const Vector3& normal)
-      : origin_(origin), u_(u_direction), v_(CGAL::cross_product(normal, u_direction)),
-        uu_(u_ * u_), vv_(v_ * v_) {}
+      : origin_(origin),
+        u_(u_direction),
+        v_(CGAL::cross_product(normal, u_direction)),
+        uu_(u_ * u_),
+        vv_(v_ * v_) {}
 
   const Point3& origin() const { return origin_; }
   const Vector3& u() const { return u_; }

@@ -26,8 +26,12 @@ using Segment2 = Kernel::Segment_2;
 using Vec3d = std::array<double, 3>;
 
 // converts a double triple to the exact point it denotes (each double is a rational).
-inline Point3 to_exact(const Vec3d& p) { return Point3(p[0], p[1], p[2]); }
-inline Vector3 to_exact_vector(const Vec3d& v) { return Vector3(v[0], v[1], v[2]); }
+inline Point3 to_exact(const Vec3d& p) {
+  return Point3(p[0], p[1], p[2]);
+}
+inline Vector3 to_exact_vector(const Vec3d& v) {
+  return Vector3(v[0], v[1], v[2]);
+}
 
 // rounds an exact point to the nearest doubles.
 inline Vec3d to_double(const Point3& p) {

@@ -11,9 +11,9 @@ namespace penumbra {
 
 struct MeshFile {
   std::filesystem::path path;
-  std::vector<Point3> vertices;            // exact, as the doubles in the file
-  std::vector<std::vector<int>> faces;     // 0-based vertex indices
-  std::vector<int> face_lines;             // the line each face was read from
+  std::vector<Point3> vertices;         // exact, as the doubles in the file
+  std::vector<std::vector<int>> faces;  // 0-based vertex indices
+  std::vector<int> face_lines;          // the line each face was read from
 };
 
 // reads an OBJ (.obj) or OFF (.off) file, chosen by extension. Throws InputError

@@ -22,14 +22,14 @@ using Colour = std::array<double, 3>;
 
 struct Material {
   std::string name;
-  double reflectance = 0.5;   // diffuse reflectance rho (luminance of a diffuse face: rho E / pi)
-  Colour color{1, 1, 1};      // relative spectral tint, each channel in [0, 1]
-  double specular = 0;        // Phong specular coefficient
-  double shininess = 0;       // Phong exponent
-  double reflect = 0;         // Whitted k_s: mirror reflection weight
-  double transmit = 0;        // Whitted k_t: transmission weight
-  double ior = 1;             // index of refraction
-  double roughness = 0;       // microfacet normal perturbation (Whitted section 2)
+  double reflectance = 0.5;  // diffuse reflectance rho (luminance of a diffuse face: rho E / pi)
+  Colour color{1, 1, 1};     // relative spectral tint, each channel in [0, 1]
+  double specular = 0;       // Phong specular coefficient
+  double shininess = 0;      // Phong exponent
+  double reflect = 0;        // Whitted k_s: mirror reflection weight
+  double transmit = 0;       // Whitted k_t: transmission weight
+  double ior = 1;            // index of refraction
+  double roughness = 0;      // microfacet normal perturbation (Whitted section 2)
 };
 
 // An exact sphere, kept beside its tessellation for renderers that can use it.
@@ -64,7 +64,8 @@ struct LinearLight {
 };
 
 struct DirectionalLight {
-  Vec3d direction;     // the direction light travels (sun into scene), exactly as written: not normalised
+  Vec3d direction;     // the direction light travels (sun into scene), exactly as written: not
+                       // normalised
   double illuminance;  // lux on a plane normal to the direction
 };
 
@@ -84,7 +85,7 @@ struct Camera {
 };
 
 struct Scene {
-  std::filesystem::path file;  // the scene file; relative paths resolve beside it
+  std::filesystem::path file;       // the scene file; relative paths resolve beside it
   std::vector<Material> materials;  // materials[0] is the default material
   std::vector<Object> objects;
   std::vector<Light> lights;
