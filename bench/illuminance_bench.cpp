@@ -1,15 +1,19 @@
 // Evaluations per second of the illuminance kernels (docs/performance.md, "Illuminance
-// kernels"): point sources, the linear-source closed form and its adaptive quadrature.
+// kernels"): point sources, the linear-source closed form and its adaptive quadrature;
+// and of whole scene queries with exact visibility (section "Illuminance in a scene").
 
 #include <benchmark/benchmark.h>
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "penumbra/illuminance/linear_source.h"
 #include "penumbra/illuminance/point_source.h"
+#include "penumbra/illuminance/scene_illuminance.h"
 #include "penumbra/illuminance/specular.h"
 
 namespace {
@@ -130,5 +134,84 @@ void linear_specular_oblique(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
 BENCHMARK(linear_specular_oblique);
+
+// === Scene queries with exact visibility: a 4 m tube, a lamp and the sun over a 12 m x 12 m
+// floor with 100 occluders: 30 tables (1 m x 0.6 m tops at 0.7 m, which make umbrae under
+// them) and 70 boxes of 0.3 m floating between 1 m and 2.5 m (which make penumbrae).
+
+penumbra::ConvexPolyhedron box_solid(const Vec3d& lo, const Vec3d& hi) {
+  std::vector<penumbra::Point3> corners;
+  for (int k = 0; k < 8; ++k)
+    corners.push_back(penumbra::to_exact(
+        {(k & 1) ? hi[0] : lo[0], (k & 2) ? hi[1] : lo[1], (k & 4) ? hi[2] : lo[2]}));
+  return penumbra::ConvexPolyhedron::hull(corners);
+}
+
+enum class Visibility { unshadowed, penumbra, umbra };
+
+struct SceneWorkload {
+  penumbra::Scene scene;
+  std::unique_ptr<il::IlluminanceSolver> solver;
+  std::vector<Vec3d> points[3];  // receiving points on the floor, by visibility of the tube
+
+  SceneWorkload() {
+    std::mt19937_64 engine{171};  // fixed seed: the same scene and points every run
+    std::uniform_real_distribution<double> coordinate(0, 12), height(1, 2.5);
+    for (int k = 0; k < 100; ++k) {
+      const double x = coordinate(engine), y = coordinate(engine);
+      const bool table = k < 30;
+      const Vec3d lo = table ? Vec3d{x, y, 0.7} : Vec3d{x, y, height(engine)};
+      const Vec3d hi = table ? Vec3d{x + 1, y + 0.6, 0.74} : Vec3d{lo[0] + 0.3, lo[1] + 0.3, lo[2] + 0.3};
+      scene.objects.push_back({"occluder" + std::to_string(k), "box", 0, box_solid(lo, hi), {}, ""});
+    }
+    scene.lights.push_back({"tube", penumbra::LinearLight{{4, 6, 3}, {8, 6, 3}, 150}, ""});
+    solver = std::make_unique<il::IlluminanceSolver>(scene);
+    // Classify random floor points by the exact visible parts of the tube.
+    const Vec3d up{0, 0, 1};
+    while (points[0].size() < 256 || points[1].size() < 256 || points[2].size() < 256) {
+      const Vec3d p{coordinate(engine), coordinate(engine), 0};
+      const auto visible = solver->visible_parts(0, p, up);
+      const bool whole = visible.size() == 1 && visible[0].low == 0 && visible[0].high == 1;
+      auto& bucket = points[visible.empty() ? 2 : whole ? 0 : 1];
+      if (bucket.size() < 256) bucket.push_back(p);
+    }
+  }
+};
+const SceneWorkload& scene_workload() {
+  static const SceneWorkload shared;
+  return shared;
+}
+
+void scene_linear_100_occluders(benchmark::State& state) {
+  const SceneWorkload& scene = scene_workload();
+  const auto& points = scene.points[state.range(0)];
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(scene.solver->light_at(0, points[i++ & 255], {0, 0, 1}));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  static const char* labels[] = {"unshadowed", "penumbra", "umbra"};
+  state.SetLabel(labels[state.range(0)]);
+}
+BENCHMARK(scene_linear_100_occluders)->Arg(0)->Arg(1)->Arg(2);
+
+// The same occluders with a point lamp over the tube's centre and with the sun, at the
+// tube's unshadowed points (culled pairs) and at its umbra points (under tables: blocked).
+void scene_point_and_sun_100_occluders(benchmark::State& state) {
+  static const il::IlluminanceSolver solver = [] {
+    penumbra::Scene scene = scene_workload().scene;
+    scene.lights.clear();
+    scene.lights.push_back(
+        {"lamp", penumbra::PointLight{{6, 6, 3}, penumbra::photometry::make_isotropic(500), {0, 0, -1}, {1, 0, 0}, nullptr}, ""});
+    scene.lights.push_back({"sun", penumbra::DirectionalLight{{0.3, 0.4, -0.87}, 60000}, ""});
+    return il::IlluminanceSolver(scene);
+  }();
+  const auto& points = scene_workload().points[state.range(1) == 0 ? 0 : 2];
+  std::size_t i = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(solver.light_at(static_cast<std::size_t>(state.range(0)), points[i++ & 255], {0, 0, 1}));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  state.SetLabel(std::string(state.range(0) == 0 ? "point lamp" : "sun") +
+                 (state.range(1) == 0 ? ", tube-unshadowed points" : ", tube-umbra points"));
+}
+BENCHMARK(scene_point_and_sun_100_occluders)->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1});
 
 }  // namespace

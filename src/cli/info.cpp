@@ -34,7 +34,8 @@ const char* light_kind(const Light& light) {
 
 int run_info(const std::string& path) {
   const Scene scene = load_scene(path);
-  for (const std::string& warning : scene.warnings) std::cerr << "penumbra: warning: " << warning << "\n";
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "penumbra: warning: " << warning << "\n";
 
   std::size_t faces = 0, vertices = 0;
   for (const Object& object : scene.objects) {
@@ -42,14 +43,14 @@ int run_info(const std::string& path) {
     vertices += object.solid.vertices().size();
   }
   std::cout << "scene " << path << "\n"
-            << "objects " << scene.objects.size() << ", faces " << faces << ", vertices " << vertices
-            << ", lights " << scene.lights.size() << ", materials " << scene.materials.size() - 1
-            << "\n";
+            << "objects " << scene.objects.size() << ", faces " << faces << ", vertices "
+            << vertices << ", lights " << scene.lights.size() << ", materials "
+            << scene.materials.size() - 1 << "\n";
   for (const Object& object : scene.objects) {
-    std::cout << "\nobject " << object.name << " (" << object.kind << (object.solid.is_flat() ? ", two-sided" : "")
-              << ", material " << scene.materials[object.material].name << "): "
-              << object.solid.faces().size() << " faces, " << object.solid.vertices().size()
-              << " vertices\n";
+    std::cout << "\nobject " << object.name << " (" << object.kind
+              << (object.solid.is_flat() ? ", two-sided" : "") << ", material "
+              << scene.materials[object.material].name << "): " << object.solid.faces().size()
+              << " faces, " << object.solid.vertices().size() << " vertices\n";
     for (std::size_t f = 0; f < object.solid.faces().size(); ++f) {
       const Face& face = object.solid.faces()[f];
       std::cout << "  face " << f << ": " << face.vertices.size() << " vertices, ";

@@ -14,12 +14,12 @@ int main(int argc, char** argv) {
              "Run 'penumbra VERB --help' for the options of a verb.");
 
   register_info(app);
-  register_pending(app, "shadows", "exact shadow polygons per face and light (JSON, SVG, DXF, CSV)", "#3");
-  register_pending(app, "check", "recompute shadows and compare exactly with a golden file", "#3");
-  register_pending(app, "illuminance", "illuminance (lux) at points or on a work plane", "#6");
+  register_shadows(app);
+  register_check(app);
+  register_illuminance(app);
   register_pending(app, "render", "scanline image with isolux colour belts", "#7");
-  register_pending(app, "raytrace", "Whitted ray-traced image", "#8");
-  register_pending(app, "lid", "photometry: info, sample, fit and convert distributions", "#5");
+  register_raytrace(app);
+  register_lid(app);
   register_pending(app, "radiosity", "interreflected illuminance on patches", "#9");
   register_pending(app, "basis", "basis luminances for relighting", "#9");
   register_pending(app, "relight", "relight from basis luminances", "#9");

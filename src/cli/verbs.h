@@ -15,6 +15,11 @@ using VerbResult = std::function<int()>;
 int& exit_status();
 
 void register_info(CLI::App& app);
+void register_shadows(CLI::App& app);
+void register_check(CLI::App& app);
+void register_raytrace(CLI::App& app);
+void register_lid(CLI::App& app);
+void register_illuminance(CLI::App& app);
 
 // registers a verb that is not built yet: it says so and exits with status 2.
 void register_pending(CLI::App& app, const std::string& name, const std::string& description,

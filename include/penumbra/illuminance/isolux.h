@@ -1,0 +1,41 @@
+#pragma once
+// Isolux lines of a work-plane grid (marching squares) and the isolux plot as SVG:
+// coloured belts between the lines (Nishita 1985 section 5, isolux colour belts),
+// the lines with lux labels, a colour legend and the plan of the objects seen from
+// above. Drawing only: doubles throughout. See docs/illuminance.md, "Isolux plot".
+//
+// (The SVG writer belongs with the io/ writers; it lives here until io/ takes it.)
+
+#include <array>
+#include <ostream>
+#include <vector>
+
+#include "penumbra/illuminance/workplane.h"
+
+namespace penumbra::illuminance {
+
+using PlanPoint = std::array<double, 2>;
+
+struct IsoluxLine {
+  double level = 0;  // lux
+  std::vector<PlanPoint> points;
+  bool closed = false;  // the last point joins the first
+};
+
+// returns "nice" contour levels strictly between minimum and maximum: a 1-2-5 series
+// when maximum / minimum > 20 (the lowest at or above max(minimum, maximum / 1000)),
+// otherwise about eight equal steps of 1, 2 or 5 x 10^k. Empty when maximum <= minimum.
+std::vector<double> isolux_levels(double minimum, double maximum);
+
+// traces the isolux lines of the grid's total illuminance at each level by marching
+// squares over the cell centres, interpolating linearly along the square edges. Squares
+// with a corner inside an object are skipped; a saddle square is resolved by the mean of
+// its corners. Segments are joined into polylines.
+std::vector<IsoluxLine> isolux_lines(const WorkplaneValues& values,
+                                     const std::vector<double>& levels);
+
+// writes the isolux plot of values over the plan of scene (x to the right, y up).
+void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValues& values,
+                      const std::vector<double>& levels);
+
+}  // namespace penumbra::illuminance

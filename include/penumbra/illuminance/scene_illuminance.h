@@ -1,0 +1,74 @@
+#pragma once
+// Illuminance at a point of a scene, per light and in total (Nishita 1985 sections 3.3
+// and 4.2.3): the kernels of point_source.h and linear_source.h fed with exact
+// visibility from occlusion.h. See docs/illuminance.md, "Illuminance in a scene".
+//
+// - point light:  E = I(theta) cos(alpha) / r^2, I from the light's distribution in its
+//                 photometric frame; 0 when an occluder meets the open segment P -> Q.
+// - directional:  E = E_n cos(alpha); 0 when an occluder meets the open ray toward the sun.
+// - linear:       the closed form integrated over the visible parts of the source: the
+//                 part on the outer side of the receiving plane minus the union of the
+//                 sub-segments each occluder hides (exact intervals, section 4.2.3). In
+//                 umbra, single or joint, E = 0.
+// Visibility is decided exactly from the doubles given; doubles enter only as magnitudes.
+// Tie-breaks: a light not strictly on the outer side of the receiving plane gives 0; a
+// segment that only touches an occluder's boundary is not blocked; a point strictly
+// inside an object gets 0 from every light.
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "penumbra/illuminance/occlusion.h"
+#include "penumbra/scene/scene.h"
+
+namespace penumbra::illuminance {
+
+// The illuminance at one receiving point.
+struct PointIlluminance {
+  double total = 0;               // lux, the sum over the lights
+  std::vector<double> per_light;  // lux, in the order of Scene::lights
+  // the object (index into Scene::objects) strictly containing the point, if any: then
+  // every value is 0 (a convex solid hides everything from a point inside it).
+  std::optional<std::size_t> inside;
+};
+
+class IlluminanceSolver {
+ public:
+  // prepares repeated queries on scene: the occluders with their bounding boxes, each
+  // light's exact frame, and for every point light the region each occluder hides from
+  // it (so a point-light query is one cull and a few exact sign tests per occluder).
+  // Copies what it needs; scene may be destroyed afterwards.
+  explicit IlluminanceSolver(const Scene& scene);
+
+  // === Queries (const and thread-safe)
+
+  // computes the illuminance at `point` on a surface with unit outward `normal`.
+  //   @param[in] point   receiving point P (m)
+  //   @param[in] normal  unit outward normal N at P (precondition: finite, non-zero)
+  PointIlluminance at(const Vec3d& point, const Vec3d& normal) const;
+
+  // computes the illuminance (lux) from light `light` (index into Scene::lights) alone.
+  double light_at(std::size_t light, const Vec3d& point, const Vec3d& normal) const;
+
+  // returns the visible parts of linear light `light` seen from point: the outer-side
+  // part of the source minus every hidden sub-segment, as exact closed intervals of the
+  // parameter u along start -> end, increasing. Precondition: the light is linear.
+  std::vector<ExactInterval> visible_parts(std::size_t light, const Vec3d& point,
+                                           const Vec3d& normal) const;
+
+  // returns the object strictly containing point, or {}.
+  std::optional<std::size_t> containing_object(const Vec3d& point) const;
+
+  std::size_t light_count() const;
+
+ private:
+  struct Impl;
+  std::shared_ptr<const Impl> impl_;
+};
+
+// computes the illuminance at one point of scene: the one-shot form of IlluminanceSolver.
+PointIlluminance illuminance_at(const Scene& scene, const Vec3d& point, const Vec3d& normal);
+
+}  // namespace penumbra::illuminance

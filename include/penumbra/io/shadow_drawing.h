@@ -1,0 +1,36 @@
+#pragma once
+// Drawings and tables of a shadow loops document (io/shadow_json.h) for CAD users:
+// an SVG sheet (plan view, camera view, or one panel per face), a DXF file of closed
+// LWPOLYLINEs on layers per light and kind, and a CSV of shaded area and percentage
+// per face and light. They read the document's double coordinates: output only.
+
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "penumbra/scene/scene.h"
+
+namespace penumbra::io {
+
+enum class SvgView { top, camera, faces };
+
+// parses "top", "camera" or "faces"; nullopt otherwise.
+std::optional<SvgView> parse_svg_view(const std::string& name);
+
+// writes the SVG drawing of document: faces outlined, shadows filled per light, a
+// legend. view camera needs camera (precondition).
+void write_shadow_svg(std::ostream& out, const nlohmann::json& document, SvgView view,
+                      const std::optional<Camera>& camera);
+
+// writes a DXF (R2000) with each face boundary on layer "faces" and every shadow and
+// lit polygon ring as a closed LWPOLYLINE on layer "<light>-shadow" / "<light>-lit",
+// in the face's plane (object coordinate system by the arbitrary axis algorithm).
+void write_shadow_dxf(std::ostream& out, const nlohmann::json& document);
+
+// writes object,face,light,face_area,shadow_area,lit_area,shadow_percent,faces_away,
+// beyond_range,occluders: one row per face and light.
+void write_shadow_csv(std::ostream& out, const nlohmann::json& document);
+
+}  // namespace penumbra::io

@@ -1,0 +1,39 @@
+#pragma once
+// The shadow map of one face under one point or directional source (Nishita 1985
+// section 3.2: "the shadow areas on the face are obtained by the union of the
+// shadows cast on it"): the exact union of the occluders' convex shadow polygons,
+// and its complement in the face. For these sources umbra = shadow and the
+// penumbra is empty (DESIGN.md, "Conventions").
+
+#include <cstddef>
+#include <vector>
+
+#include "penumbra/geometry/convex_polyhedron.h"
+#include "penumbra/shadow/region.h"
+
+namespace penumbra {
+
+struct OccluderShadow {
+  std::size_t occluder;  // the occluding object's index (in the caller's numbering)
+  Ring2 polygon;         // convex, counter-clockwise, canonical, in the face's frame
+};
+
+struct FaceShadow {
+  bool faces_away = false;    // the source is not strictly on the face's outer side
+  bool beyond_range = false;  // the face lies wholly outside the sphere of lighting: not computed
+  std::vector<OccluderShadow> occluders;  // sorted by occluder
+  Region2 shadow;                         // = umbra for point and directional sources
+  Region2 lit;                            // the face minus shadow
+};
+
+// returns the face's polygon in its own frame (counter-clockwise).
+Ring2 face_ring(const Face& face);
+
+// returns the shadow map of a face that faces away from the source: all shadow.
+FaceShadow unlit_face(const Face& face);
+
+// unites the occluders' shadow polygons on face (Polygon_set_2, aggregated join)
+// and subtracts the union from the face. occluders must be sorted by occluder.
+FaceShadow unite_shadows(const Face& face, std::vector<OccluderShadow> occluders);
+
+}  // namespace penumbra

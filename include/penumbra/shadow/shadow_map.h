@@ -1,0 +1,57 @@
+#pragma once
+// Exact shadows of a scene under its point and directional sources (Nishita 1985
+// sections 3.1-3.2): for every light and every face, the shadow and lit polygon
+// sets and each occluder's shadow polygon, after culling with the sphere of
+// lighting and a broad phase. Results are in canonical order (objects by name,
+// faces by their canonical index), independent of the input order and of threads.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "penumbra/scene/scene.h"
+#include "penumbra/shadow/face_shadow.h"
+#include "penumbra/visibility/broad_phase.h"
+
+namespace penumbra {
+
+struct ShadowOptions {
+  std::optional<std::string>
+      light;  // only the light of this name; all point and sun lights otherwise
+  // threshold illuminance of the sphere of lighting as a fraction of I_max / (1 m)^2
+  // (Nishita 1985 section 3.1: 1/256 for an 8-bit display); 0 disables range culling.
+  double range_fraction = 1.0 / 256;
+  std::optional<double> range_lux;  // an absolute threshold in lux instead of the fraction
+  bool broad_phase = true;          // false: test every (occluder, face) pair
+  bool parallel = true;             // TBB across faces
+};
+
+struct ShadowStats {
+  std::size_t faces = 0;            // receiving faces
+  std::size_t faces_away = 0;       // faces wholly unlit because they face away
+  std::size_t beyond_range = 0;     // faces outside the sphere of lighting
+  std::size_t pairs_possible = 0;   // faces x (objects - 1)
+  std::size_t pairs_tested = 0;     // (occluder, face) pairs given to shadow_polygon
+  std::size_t pairs_shadowing = 0;  // pairs whose shadow has area
+  std::optional<double> radius;     // sphere of lighting, metres
+  double seconds = 0;               // wall time for this light
+};
+
+struct LightShadows {
+  std::size_t light;  // index into Scene::lights
+  ShadowStats stats;
+  std::vector<FaceShadow> faces;  // parallel to ShadowResult::receivers; occluder = object index
+};
+
+struct ShadowResult {
+  std::vector<Receiver> receivers;  // object (index into Scene::objects) and face, canonical order
+  std::vector<LightShadows> lights;
+  std::vector<std::string> warnings;  // e.g. linear lights, not handled by this computation
+};
+
+// computes the shadow maps of every face of scene for its point and directional
+// lights. Throws InputError when options.light names no light or a linear one.
+ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options = {});
+
+}  // namespace penumbra

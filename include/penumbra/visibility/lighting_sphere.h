@@ -1,0 +1,34 @@
+#pragma once
+// The sphere of lighting of a point source (Nishita 1985 section 3.1, Fig. 2): the
+// ball around the source outside which its illuminance cannot reach the display
+// threshold, so faces wholly outside it need no shadow detection. The threshold
+// illuminance E_t is either a fraction of the illuminance I_max / (1 m)^2 that the
+// brightest direction gives at 1 m (1/256 by default: one step of an 8-bit display),
+// or an absolute value in lux. The radius solves I_max / r^2 = E_t.
+
+#include <optional>
+
+#include "penumbra/geometry/convex_polyhedron.h"
+
+namespace penumbra {
+
+class LightingSphere {
+ public:
+  // builds the sphere around centre for a source of maximum intensity max_candela
+  // with threshold E_t = fraction * max_candela lux (radius 1 / sqrt(fraction) m).
+  // Precondition: fraction > 0.
+  static LightingSphere relative(const Point3& centre, double fraction);
+  // builds the sphere with an absolute threshold E_t = lux > 0: radius sqrt(I_max / lux).
+  static LightingSphere absolute(const Point3& centre, double max_candela, double lux);
+
+  // the radius in metres (rounded; decisions use the exact squared radius).
+  double radius() const;
+  // returns true when every point of face is strictly farther than the radius.
+  bool beyond(const Face& face) const;
+
+ private:
+  Point3 centre_;
+  Exact squared_radius_;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,287 @@
+// penumbra illuminance SCENE: illuminance (lux) at given points or on a work plane grid
+// (Nishita 1985 sections 3.3 and 4.2), with statistics and an isolux plot.
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "penumbra/illuminance/isolux.h"
+#include "penumbra/illuminance/scene_illuminance.h"
+#include "penumbra/illuminance/workplane.h"
+#include "penumbra/input_error.h"
+#include "penumbra/io/atomic_file.h"
+#include "penumbra/io/progress.h"
+#include "penumbra/scene/load_scene.h"
+#include "verbs.h"
+
+namespace penumbra::cli {
+namespace {
+
+namespace il = illuminance;
+
+struct IlluminanceArguments {
+  std::string scene;
+  std::string points;
+  std::string output;
+  std::optional<double> workplane;
+  double spacing = 0;
+  std::string region;
+  std::string svg;
+  std::string levels;
+};
+
+// A receiving point as read from the points file.
+struct Receiver {
+  Vec3d point;
+  Vec3d normal;  // unit
+};
+
+// === Reading the points file (header x,y,z,nx,ny,nz; columns found by name)
+
+std::string_view trim(std::string_view text) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
+    text.remove_suffix(1);
+  return text;
+}
+
+std::vector<std::string_view> split(std::string_view line) {
+  std::vector<std::string_view> fields;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = line.find(',', start);
+    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
+    if (comma == std::string_view::npos) return fields;
+    start = comma + 1;
+  }
+}
+
+// the tolerance on |normal| - 1: enough for normals written with four decimals
+// (0.7071, 0.7071 has length 0.99999); a longer or shorter vector is more likely a column
+// mix-up than a normal, so it is refused rather than silently rescaled.
+constexpr double kNormalLengthTolerance = 1e-3;
+
+std::vector<Receiver> read_points(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file, "", "cannot open the points file");
+  std::string line;
+  if (!std::getline(in, line)) throw InputError(file, "line 1", "empty file: expected a header x,y,z,nx,ny,nz");
+  if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark
+  const std::vector<std::string_view> header = split(line);
+  const char* names[6] = {"x", "y", "z", "nx", "ny", "nz"};
+  std::size_t column[6];
+  for (int c = 0; c < 6; ++c) {
+    std::size_t found = header.size();
+    for (std::size_t k = 0; k < header.size(); ++k)
+      if (header[k] == names[c]) {
+        if (found != header.size())
+          throw InputError(file, "line 1", std::string("column \"") + names[c] + "\" appears twice");
+        found = k;
+      }
+    if (found == header.size())
+      throw InputError(file, "line 1", std::string("missing column \"") + names[c] +
+                                           "\" (the header must name x,y,z,nx,ny,nz)");
+    column[c] = found;
+  }
+
+  std::vector<Receiver> receivers;
+  for (std::size_t number = 2; std::getline(in, line); ++number) {
+    if (trim(line).empty()) continue;
+    const std::string where = "line " + std::to_string(number);
+    const std::vector<std::string_view> fields = split(line);
+    if (fields.size() != header.size())
+      throw InputError(file, where, "expected " + std::to_string(header.size()) + " fields as in the header, found " +
+                                        std::to_string(fields.size()));
+    double value[6];
+    for (int c = 0; c < 6; ++c) {
+      const std::string_view field = fields[column[c]];
+      const char* end = field.data() + field.size();
+      auto [stop, error] = std::from_chars(field.data(), end, value[c]);
+      if (field.empty() || error != std::errc() || stop != end)
+        throw InputError(file, where + ", column " + names[c], "not a number: \"" + std::string(field) + "\"");
+      if (!std::isfinite(value[c]))
+        throw InputError(file, where + ", column " + names[c], "not a finite number: \"" + std::string(field) + "\"");
+    }
+    Receiver receiver{{value[0], value[1], value[2]}, {value[3], value[4], value[5]}};
+    const double length = std::sqrt(value[3] * value[3] + value[4] * value[4] + value[5] * value[5]);
+    if (length == 0) throw InputError(file, where + ", columns nx,ny,nz", "the normal is the zero vector");
+    if (std::abs(length - 1) > kNormalLengthTolerance)
+      throw InputError(file, where + ", columns nx,ny,nz",
+                       "the normal has length " + std::to_string(length) + "; give a unit vector (within 1e-3)");
+    for (double& n : receiver.normal) n /= length;
+    receivers.push_back(receiver);
+  }
+  return receivers;
+}
+
+// === Writing CSV
+
+std::string format_double(double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+// writes the values: x,y,z,nx,ny,nz,E,E[<light>]...,inside (the object containing the
+// point, empty when none).
+void write_values(std::ostream& out, const Scene& scene, const std::vector<Receiver>& receivers,
+                  const std::vector<il::PointIlluminance>& values) {
+  out << "x,y,z,nx,ny,nz,E";
+  for (const Light& light : scene.lights) out << ',' << csv_field("E[" + light.name + "]");
+  out << ",inside\n";
+  for (std::size_t k = 0; k < receivers.size(); ++k) {
+    for (double coordinate : receivers[k].point) out << format_double(coordinate) << ',';
+    for (double component : receivers[k].normal) out << format_double(component) << ',';
+    out << format_double(values[k].total);
+    for (double value : values[k].per_light) out << ',' << format_double(value);
+    out << ',' << (values[k].inside ? csv_field(scene.objects[*values[k].inside].name) : "") << '\n';
+  }
+}
+
+std::vector<double> parse_numbers(const std::string& text, const std::string& option) {
+  std::vector<double> numbers;
+  for (std::string_view field : split(text)) {
+    double value = 0;
+    const char* end = field.data() + field.size();
+    auto [stop, error] = std::from_chars(field.data(), end, value);
+    if (field.empty() || error != std::errc() || stop != end || !std::isfinite(value))
+      throw InputError("", option, "not a number: \"" + std::string(field) + "\"");
+    numbers.push_back(value);
+  }
+  return numbers;
+}
+
+int run_points(const IlluminanceArguments& arguments, const Scene& scene) {
+  const std::vector<Receiver> receivers = read_points(arguments.points);
+  const il::IlluminanceSolver solver(scene);
+  std::vector<il::PointIlluminance> values(receivers.size());
+  {
+    io::Progress progress("illuminance", receivers.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers.size(), 16),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t k = range.begin(); k != range.end(); ++k)
+                          values[k] = solver.at(receivers[k].point, receivers[k].normal);
+                        progress.advance(range.size());
+                      });
+  }
+  if (arguments.output.empty() || arguments.output == "-")
+    write_values(std::cout, scene, receivers, values);
+  else
+    io::write_atomically(arguments.output,
+                         [&](std::ostream& out) { write_values(out, scene, receivers, values); });
+  return 0;
+}
+
+int run_workplane(const IlluminanceArguments& arguments, const Scene& scene) {
+  il::PlanRegion region{};
+  if (!arguments.region.empty()) {
+    const std::vector<double> corners = parse_numbers(arguments.region, "--region");
+    if (corners.size() != 4) throw InputError("", "--region", "expected x0,y0,x1,y1");
+    region = {corners[0], corners[1], corners[2], corners[3]};
+    if (!(region.x1 > region.x0) || !(region.y1 > region.y0))
+      throw InputError("", "--region", "expected x0 < x1 and y0 < y1");
+  } else if (const auto bounds = il::plan_bounds(scene)) {
+    region = *bounds;
+  } else {
+    throw InputError(arguments.scene, "objects", "the scene has no objects: give --region");
+  }
+  if (!std::isfinite(*arguments.workplane)) throw InputError("", "--workplane", "not a finite height");
+  if (!(arguments.spacing > 0) || !std::isfinite(arguments.spacing))
+    throw InputError("", "--spacing", "expected a positive spacing");
+  const double cells = std::ceil((region.x1 - region.x0) / arguments.spacing) *
+                       std::ceil((region.y1 - region.y0) / arguments.spacing);
+  if (cells > 1e8) throw InputError("", "--spacing", "more than 10^8 grid points: use a larger spacing");
+  std::vector<double> levels;
+  if (!arguments.levels.empty()) {
+    levels = parse_numbers(arguments.levels, "--levels");
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  }
+
+  const il::WorkplaneGrid grid = il::make_workplane_grid(*arguments.workplane, arguments.spacing, region);
+  const il::IlluminanceSolver solver(scene);
+  il::WorkplaneValues values;
+  {
+    io::Progress progress("work plane", grid.size());
+    values = il::evaluate_workplane(solver, grid, [&](std::size_t done) { progress.advance(done); });
+  }
+  const il::WorkplaneStatistics statistics = il::workplane_statistics(values);
+
+  if (!arguments.output.empty()) {
+    std::vector<Receiver> receivers;
+    for (std::size_t k = 0; k < grid.size(); ++k) receivers.push_back({grid.point(k), {0, 0, 1}});
+    io::write_atomically(arguments.output,
+                         [&](std::ostream& out) { write_values(out, scene, receivers, values.values); });
+  }
+  if (!arguments.svg.empty()) {
+    if (levels.empty()) levels = il::isolux_levels(statistics.minimum, statistics.maximum);
+    io::write_atomically(arguments.svg,
+                         [&](std::ostream& out) { il::write_isolux_svg(out, scene, values, levels); });
+  }
+
+  std::ostringstream report;
+  report << "work plane z = " << *arguments.workplane << " m, region " << region.x0 << ',' << region.y0
+         << " to " << region.x1 << ',' << region.y1 << ", " << grid.columns << " x " << grid.rows
+         << " cells of " << grid.cell_width << " x " << grid.cell_depth << " m: " << statistics.points
+         << " points";
+  if (statistics.excluded) report << " (" << statistics.excluded << " inside objects, not counted)";
+  report << "\nE min " << statistics.minimum << " lx, average " << statistics.average << " lx, max "
+         << statistics.maximum << " lx, uniformity U0 = Emin/Eavg = " << statistics.uniformity << "\n";
+  for (std::size_t light = 0; light < scene.lights.size(); ++light) {
+    const auto& [low, average, high] = statistics.per_light[light];
+    report << "  " << scene.lights[light].name << ": min " << low << " lx, average " << average << " lx, max "
+           << high << " lx\n";
+  }
+  std::cout << report.str();
+  return 0;
+}
+
+int run_illuminance(const IlluminanceArguments& arguments) {
+  if (arguments.points.empty() == !arguments.workplane.has_value())
+    throw InputError("", "", "give either --points FILE or --workplane HEIGHT --spacing S");
+  if (arguments.workplane && !(arguments.spacing > 0))
+    throw InputError("", "--spacing", "--workplane needs a positive --spacing");
+  if (!arguments.workplane && (!arguments.svg.empty() || !arguments.region.empty()))
+    throw InputError("", "", "--svg and --region apply to --workplane only");
+  const Scene scene = load_scene(arguments.scene);
+  for (const std::string& warning : scene.warnings) std::cerr << "penumbra: warning: " << warning << "\n";
+  return arguments.workplane ? run_workplane(arguments, scene) : run_points(arguments, scene);
+}
+
+}  // namespace
+
+void register_illuminance(CLI::App& app) {
+  CLI::App* verb = app.add_subcommand(
+      "illuminance", "illuminance (lux) at points or on a work plane, with an isolux plot");
+  auto arguments = std::make_shared<IlluminanceArguments>();
+  verb->add_option("SCENE", arguments->scene, "scene file (JSON)")->required();
+  verb->add_option("--points", arguments->points,
+                   "CSV with header x,y,z,nx,ny,nz (unit normals; other columns ignored)");
+  verb->add_option("-o,--output", arguments->output,
+                   "CSV of x,y,z,nx,ny,nz,E,E[<light>]...,inside (--points: default standard output)");
+  verb->add_option("--workplane", arguments->workplane, "height z of a horizontal work plane (normal +z)");
+  verb->add_option("--spacing", arguments->spacing, "largest grid cell size on the work plane (m)");
+  verb->add_option("--region", arguments->region,
+                   "x0,y0,x1,y1: the work plane's extent (default: the scene's bounding box)");
+  verb->add_option("--svg", arguments->svg, "isolux plot of the work plane (SVG)");
+  verb->add_option("--levels", arguments->levels, "isolux levels in lux, e.g. 100,200,500 (default: chosen)");
+  verb->callback([arguments] { exit_status() = run_illuminance(*arguments); });
+}
+
+}  // namespace penumbra::cli

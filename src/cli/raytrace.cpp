@@ -1,0 +1,147 @@
+// penumbra raytrace SCENE -o image.png: Whitted's ray tracer (docs/raytrace.md).
+
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "penumbra/input_error.h"
+#include "penumbra/io/atomic_file.h"
+#include "penumbra/io/png.h"
+#include "penumbra/io/tone_map.h"
+#include "penumbra/raytrace/render.h"
+#include "penumbra/scene/load_scene.h"
+#include "verbs.h"
+
+namespace penumbra::cli {
+namespace {
+
+struct RaytraceArguments {
+  std::string scene;
+  std::string output;
+  int depth = 8;
+  std::string aa = "adaptive";
+  int aa_depth = 3;
+  double aa_threshold = 0.1;
+  bool fresnel = false;
+  std::string attenuation = "none";
+  std::string exposure = "auto";
+  std::string values;
+  int tube_samples = 16;
+};
+
+// returns the exposure given on the command line, 0 for "auto", or -1 when it is neither.
+double parse_exposure(const std::string& text) {
+  if (text == "auto") return 0;
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return -1;
+  }
+  return used == text.size() && value > 0 ? value : -1;
+}
+
+void write_values(const std::string& path, const Scene& scene,
+                  const raytrace::RenderedImage& image) {
+  io::write_atomically(path, [&](std::ostream& out) {
+    out << "px,py,object,R,G,B\n" << std::setprecision(9);
+    for (int j = 0; j < image.height; ++j)
+      for (int i = 0; i < image.width; ++i) {
+        const std::size_t index = static_cast<std::size_t>(j) * image.width + i;
+        const long object = image.objects[index];
+        const raytrace::Radiance& value = image.pixels[index];
+        out << i << ',' << j << ','
+            << (object >= 0 ? scene.objects[static_cast<std::size_t>(object)].name : "") << ','
+            << value[0] << ',' << value[1] << ',' << value[2] << '\n';
+      }
+  });
+}
+
+int run_raytrace(const RaytraceArguments& args) {
+  const double exposure = parse_exposure(args.exposure);
+  const Scene scene = load_scene(args.scene);
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "penumbra: warning: " << warning << "\n";
+  if (!scene.camera) throw InputError(args.scene, "camera", "raytrace needs a camera in the scene");
+
+  raytrace::TraceOptions trace;
+  trace.max_depth = args.depth;
+  trace.fresnel = args.fresnel;
+  trace.attenuation =
+      args.attenuation == "linear" ? raytrace::Attenuation::linear : raytrace::Attenuation::none;
+  trace.tube_samples = args.tube_samples;
+  raytrace::RenderOptions render;
+  render.anti_aliasing =
+      args.aa == "none" ? raytrace::AntiAliasing::none : raytrace::AntiAliasing::adaptive;
+  render.aa_depth = args.aa_depth;
+  render.aa_threshold = args.aa_threshold;
+  if (exposure > 0) render.exposure = exposure;
+  render.objects = !args.values.empty();
+
+  const auto start = std::chrono::steady_clock::now();
+  const raytrace::RayTracer tracer(scene, trace);
+  const raytrace::RenderedImage image = raytrace::render(tracer, *scene.camera, render);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  io::write_png(args.output, image.width, image.height, io::to_srgb8(image.pixels, image.exposure));
+  if (!args.values.empty()) write_values(args.values, scene, image);
+
+  const raytrace::RayCounts& rays = image.counts;
+  const double pixels = static_cast<double>(image.width) * image.height;
+  std::cout << "raytrace " << image.width << " x " << image.height << ", aa " << args.aa;
+  if (args.aa == "adaptive")
+    std::cout << " (depth " << args.aa_depth << ", " << image.subdivided_pixels
+              << " pixels subdivided)";
+  std::cout << ", ray depth " << args.depth << "\n"
+            << "rays " << rays.total() << " (camera " << rays.camera << ", shadow " << rays.shadow
+            << ", reflected " << rays.reflected << ", refracted " << rays.refracted << "), "
+            << std::setprecision(3) << static_cast<double>(rays.camera) / pixels
+            << " camera rays per pixel\n"
+            << "time " << seconds << " s, " << static_cast<double>(rays.total()) / seconds / 1e6
+            << " Mrays/s, exposure " << image.exposure << " per cd/m^2\n"
+            << "image " << args.output << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void register_raytrace(CLI::App& app) {
+  CLI::App* verb = app.add_subcommand("raytrace", "Whitted ray-traced image (PNG)");
+  auto args = std::make_shared<RaytraceArguments>();
+  verb->add_option("SCENE", args->scene, "scene file (JSON) with a camera")->required();
+  verb->add_option("-o,--output", args->output, "PNG image to write")->required();
+  verb->add_option("--depth", args->depth, "deepest reflection/refraction generation")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 64));
+  verb->add_option("--aa", args->aa, "anti-aliasing: adaptive (Whitted section 3) or none")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"adaptive", "none"}));
+  verb->add_option("--aa-depth", args->aa_depth, "adaptive subdivision levels below a pixel")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 8));
+  verb->add_option("--aa-threshold", args->aa_threshold,
+                   "corner difference (sRGB display units) that triggers subdivision")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  verb->add_flag("--fresnel", args->fresnel, "k_s, k_t from the dielectric Fresnel equations");
+  verb->add_option("--attenuation", args->attenuation,
+                   "none, or linear with distance as in Whitted section 2")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"none", "linear"}));
+  verb->add_option("--exposure", args->exposure, "auto, or the scale from cd/m^2 to white")
+      ->capture_default_str()
+      ->check([](const std::string& text) {
+        return parse_exposure(text) < 0 ? "expected 'auto' or a positive number" : "";
+      });
+  verb->add_option("--tube-samples", args->tube_samples,
+                   "stratified samples per linear source and shading point")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 4096));
+  verb->add_option("--values", args->values, "CSV of px,py,object,R,G,B (linear luminance)");
+  verb->callback([args] { exit_status() = run_raytrace(*args); });
+}
+
+}  // namespace penumbra::cli

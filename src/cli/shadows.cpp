@@ -1,0 +1,117 @@
+// penumbra shadows SCENE: exact shadow polygons per face and light (Nishita 1985
+// sections 3.1-3.2) as JSON, with SVG, DXF and CSV outputs for CAD users.
+
+#include <iostream>
+#include <memory>
+
+#include "penumbra/input_error.h"
+#include "penumbra/io/atomic_file.h"
+#include "penumbra/io/shadow_drawing.h"
+#include "penumbra/io/shadow_json.h"
+#include "penumbra/scene/load_scene.h"
+#include "penumbra/shadow/shadow_map.h"
+#include "verbs.h"
+
+namespace penumbra::cli {
+namespace {
+
+struct ShadowsArguments {
+  std::string scene;
+  std::string output;
+  bool exact = false;
+  std::string light;
+  std::string svg;
+  std::string view = "top";
+  std::string dxf;
+  std::string report;
+  double range_fraction = 1.0 / 256;
+  double range_lux = 0;
+  bool stats = false;
+};
+
+int run_shadows(const ShadowsArguments& arguments) {
+  const auto view = io::parse_svg_view(arguments.view);
+  if (!view) throw InputError("", "--view", "expected top, camera or faces");
+  const Scene scene = load_scene(arguments.scene);
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "penumbra: warning: " << warning << "\n";
+  if (*view == io::SvgView::camera && !arguments.svg.empty() && !scene.camera)
+    throw InputError(arguments.scene, "camera", "--view camera needs a camera in the scene");
+
+  ShadowOptions options;
+  if (!arguments.light.empty()) options.light = arguments.light;
+  options.range_fraction = arguments.range_fraction;
+  if (arguments.range_lux > 0) options.range_lux = arguments.range_lux;
+  const ShadowResult result = compute_shadows(scene, options);
+  for (const std::string& warning : result.warnings)
+    std::cerr << "penumbra: warning: " << warning << "\n";
+
+  io::ShadowJsonOptions json_options;
+  json_options.exact = arguments.exact;
+  json_options.range_fraction = options.range_fraction;
+  json_options.range_lux = options.range_lux;
+  const nlohmann::json document = shadow_json(scene, result, json_options);
+
+  if (arguments.output.empty() || arguments.output == "-")
+    std::cout << io::format_json(document);
+  else
+    io::write_atomically(arguments.output,
+                         [&](std::ostream& out) { out << io::format_json(document); });
+  if (!arguments.svg.empty())
+    io::write_atomically(arguments.svg, [&](std::ostream& out) {
+      io::write_shadow_svg(out, document, *view, scene.camera);
+    });
+  if (!arguments.dxf.empty())
+    io::write_atomically(arguments.dxf,
+                         [&](std::ostream& out) { io::write_shadow_dxf(out, document); });
+  if (!arguments.report.empty())
+    io::write_atomically(arguments.report,
+                         [&](std::ostream& out) { io::write_shadow_csv(out, document); });
+
+  if (arguments.stats)
+    for (const LightShadows& light : result.lights) {
+      const ShadowStats& s = light.stats;
+      std::cerr << "light " << scene.lights[light.light].name << ": " << s.faces << " faces, "
+                << s.faces_away << " facing away, " << s.beyond_range
+                << " beyond the sphere of lighting";
+      if (s.radius) std::cerr << " (radius " << *s.radius << " m)";
+      std::cerr << "; pairs tested " << s.pairs_tested << " of " << s.pairs_possible << ", "
+                << s.pairs_shadowing << " with a shadow; " << s.seconds << " s\n";
+    }
+  return 0;
+}
+
+}  // namespace
+
+void register_shadows(CLI::App& app) {
+  CLI::App* verb = app.add_subcommand(
+      "shadows", "exact shadow polygons per face and light (JSON, SVG, DXF, CSV)");
+  auto arguments = std::make_shared<ShadowsArguments>();
+  verb->add_option("SCENE", arguments->scene, "scene file (JSON)")->required();
+  verb->add_option("-o,--output", arguments->output,
+                   "shadow loops JSON (default: standard output)");
+  verb->add_flag("--exact", arguments->exact,
+                 "add exact rational coordinates (\"p/q\") under \"exact\" keys");
+  verb->add_option("--light", arguments->light, "only the light of this name");
+  verb->add_option("--svg", arguments->svg, "SVG drawing of faces and shadows");
+  verb->add_option("--view", arguments->view,
+                   "SVG view: top (plan), camera, or faces (one panel each)")
+      ->check(CLI::IsMember({"top", "camera", "faces"}));
+  verb->add_option("--dxf", arguments->dxf,
+                   "DXF file: closed LWPOLYLINEs on layers per light and kind");
+  verb->add_option("--report", arguments->report,
+                   "CSV: shaded area and percentage per face and light");
+  verb->add_option("--range-fraction", arguments->range_fraction,
+                   "sphere of lighting: threshold illuminance as a fraction of I_max / (1 m)^2 "
+                   "(default 1/256; 0: no range culling)")
+      ->check(CLI::NonNegativeNumber);
+  verb->add_option(
+          "--range-lux", arguments->range_lux,
+          "sphere of lighting: absolute threshold illuminance in lux (overrides the fraction)")
+      ->check(CLI::PositiveNumber);
+  verb->add_flag("--stats", arguments->stats,
+                 "print faces, pairs tested and time per light on stderr");
+  verb->callback([arguments] { exit_status() = run_shadows(*arguments); });
+}
+
+}  // namespace penumbra::cli

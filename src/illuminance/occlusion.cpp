@@ -1,0 +1,150 @@
+#include "penumbra/illuminance/occlusion.h"
+
+#include <algorithm>
+
+namespace penumbra::illuminance {
+namespace {
+
+// F(S, X) = n.X + d (Nishita eq. (3), not normalised), exactly.
+Exact plane_value(const Plane3& plane, const Point3& x) {
+  return plane.a() * x.x() + plane.b() * x.y() + plane.c() * x.z() + plane.d();
+}
+
+// narrows the open interval (low, high) of u to where value_at_a + u slope < 0;
+// returns false when it becomes empty.
+bool clip_below_zero(const Exact& value_at_a, const Exact& slope, Exact& low, Exact& high) {
+  if (CGAL::is_zero(slope)) return CGAL::is_negative(value_at_a);
+  const Exact crossing = -value_at_a / slope;
+  if (CGAL::is_positive(slope)) {
+    if (crossing < high) high = crossing;
+  } else if (crossing > low) {
+    low = crossing;
+  }
+  return low < high;
+}
+
+// true when x, a point of the flat polygon's plane, is strictly inside the polygon:
+// strictly on the same side of every edge line (the polygon is convex).
+bool in_relative_interior(const Face& face, const Point3& x) {
+  const Vector3 normal = face.normal();
+  const std::size_t n = face.vertices.size();
+  CGAL::Orientation first = CGAL::COPLANAR;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point3& from = face.vertices[i];
+    const CGAL::Orientation side =
+        CGAL::orientation(from, face.vertices[(i + 1) % n], from + normal, x);
+    if (side == CGAL::COPLANAR) return false;
+    if (i == 0)
+      first = side;
+    else if (side != first)
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool HiddenRegion::contains(const Point3& x) const {
+  return everywhere || (!volume.planes.empty() && volume.contains(x));
+}
+
+HiddenRegion hidden_region(const ConvexPolyhedron& occluder, const Point3& apex) {
+  HiddenRegion region;
+  if (occluder.is_flat()) {
+    // Apex off the polygon's plane: the open pyramid behind the polygon; in the plane:
+    // the open segment leaves the plane at once, so nothing is hidden (no contour).
+    region.volume = point_shadow_volume(occluder, apex);
+    return region;
+  }
+  switch (occluder.bounded_side(apex)) {
+    case CGAL::ON_BOUNDED_SIDE:
+      region.everywhere = true;
+      break;
+    case CGAL::ON_BOUNDARY:
+      // For small t > 0, apex + t (X - apex) is interior iff it goes strictly inward
+      // through every face holding the apex; F(X) = n.(X - apex) for those faces, and
+      // convexity carries "interior near the apex" to the whole open segment.
+      for (const Face& face : occluder.faces())
+        if (face.plane.oriented_side(apex) == CGAL::ON_ORIENTED_BOUNDARY)
+          region.volume.planes.push_back(face.plane);
+      break;
+    default:
+      region.volume = point_shadow_volume(occluder, apex);
+      break;
+  }
+  return region;
+}
+
+std::optional<ExactInterval> hidden_interval(const HiddenRegion& region, const Point3& a,
+                                             const Point3& b) {
+  Exact low = 0, high = 1;
+  if (region.everywhere) return ExactInterval{low, high};
+  if (region.volume.planes.empty()) return std::nullopt;
+  // Section 4.2.3 in object space: clip the source against each open half-space of the
+  // pyramid from the receiving point through the occluder's contour. Along the source
+  // F(Q(u)) = F(a) + u (F(b) - F(a)).
+  for (const Plane3& plane : region.volume.planes) {
+    const Exact at_a = plane_value(plane, a);
+    if (!clip_below_zero(at_a, plane_value(plane, b) - at_a, low, high)) return std::nullopt;
+  }
+  return ExactInterval{low, high};
+}
+
+std::optional<ExactInterval> outer_side_interval_exact(const Point3& point, const Vector3& normal,
+                                                       const Point3& a, const Point3& b) {
+  // n.(Q(u) - point) > 0  <=>  -n.(a - point) - u n.(b - a) < 0.
+  Exact low = 0, high = 1;
+  if (!clip_below_zero(-(normal * (a - point)), -(normal * (b - a)), low, high)) return std::nullopt;
+  return ExactInterval{low, high};
+}
+
+std::vector<ExactInterval> visible_intervals(const ExactInterval& within,
+                                             std::vector<ExactInterval> hidden) {
+  std::sort(hidden.begin(), hidden.end(),
+            [](const ExactInterval& x, const ExactInterval& y) { return x.low < y.low; });
+  std::vector<ExactInterval> visible;
+  Exact cursor = within.low;
+  for (const ExactInterval& blocked : hidden) {
+    if (!(cursor < within.high)) break;
+    if (cursor < blocked.low) {
+      const Exact end = blocked.low < within.high ? blocked.low : within.high;
+      visible.push_back({cursor, end});
+    }
+    if (cursor < blocked.high) cursor = blocked.high;
+  }
+  if (cursor < within.high) visible.push_back({cursor, within.high});
+  return visible;
+}
+
+bool ray_hidden(const ConvexPolyhedron& occluder, const Point3& point, const Vector3& toward) {
+  if (occluder.is_flat()) {
+    // The ray crosses the polygon's plane once, at t > 0, inside the polygon.
+    const Face& face = occluder.faces().front();
+    const Exact at_point = plane_value(face.plane, point);
+    const Exact slope = face.normal() * toward;
+    if (CGAL::is_zero(slope) || CGAL::sign(at_point) != CGAL::opposite(CGAL::sign(slope))) return false;
+    return in_relative_interior(face, point + (-at_point / slope) * toward);
+  }
+  // The open ray point + t toward, t > 0, meets the interior iff some t > 0 has every
+  // F < 0: a one-dimensional clip, unbounded above until a face bounds it.
+  Exact low = 0;
+  std::optional<Exact> high;
+  for (const Face& face : occluder.faces()) {
+    const Exact at_point = plane_value(face.plane, point);
+    const Exact slope = face.normal() * toward;
+    if (CGAL::is_zero(slope)) {
+      if (!CGAL::is_negative(at_point)) return false;
+      continue;
+    }
+    const Exact crossing = -at_point / slope;
+    if (CGAL::is_positive(slope)) {
+      if (!high || crossing < *high) high = crossing;
+    } else if (crossing > low) {
+      low = crossing;
+    }
+    if (high && !(low < *high)) return false;
+  }
+  return !high || low < *high;
+}
+
+}  // namespace penumbra::illuminance

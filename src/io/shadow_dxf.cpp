@@ -1,0 +1,133 @@
+#include <cmath>
+#include <iomanip>
+#include <set>
+#include <sstream>
+
+#include "penumbra/io/shadow_drawing.h"
+
+namespace penumbra::io {
+namespace {
+
+using Vec = std::array<double, 3>;
+
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec& a, const Vec& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Vec unit(const Vec& a) {
+  const double length = std::sqrt(dot(a, a));
+  return {a[0] / length, a[1] / length, a[2] / length};
+}
+
+// The object coordinate system of an entity with extrusion direction n (DXF
+// reference, "Arbitrary Axis Algorithm").
+struct Ocs {
+  Vec x, y, z;
+  explicit Ocs(const Vec& normal) : z(unit(normal)) {
+    const double limit = 1.0 / 64;
+    x = unit(std::abs(z[0]) < limit && std::abs(z[1]) < limit ? cross({0, 1, 0}, z)
+                                                              : cross({0, 0, 1}, z));
+    y = unit(cross(z, x));
+  }
+};
+
+class DxfWriter {
+ public:
+  explicit DxfWriter(std::ostream& out) : out_(out) { out_ << std::setprecision(17); }
+
+  void tag(int code, const std::string& value) { out_ << code << "\n" << value << "\n"; }
+  void tag(int code, double value) { out_ << code << "\n" << value << "\n"; }
+  std::string handle() {
+    std::ostringstream text;
+    text << std::hex << std::uppercase << next_handle_++;
+    return text.str();
+  }
+
+  // writes a closed LWPOLYLINE through world points, all in the plane of normal.
+  void polyline(const std::string& layer, const nlohmann::json& ring, const Vec& normal) {
+    const Ocs ocs(normal);
+    tag(0, "LWPOLYLINE");
+    tag(5, handle());
+    tag(100, "AcDbEntity");
+    tag(8, layer);
+    tag(100, "AcDbPolyline");
+    tag(90, std::to_string(ring.size()));
+    tag(70, "1");
+    const Vec first = ring.at(0).get<Vec>();
+    tag(38, dot(first, ocs.z));
+    for (const auto& point : ring) {
+      const Vec p = point.get<Vec>();
+      tag(10, dot(p, ocs.x));
+      tag(20, dot(p, ocs.y));
+    }
+    tag(210, ocs.z[0]);
+    tag(220, ocs.z[1]);
+    tag(230, ocs.z[2]);
+  }
+
+ private:
+  std::ostream& out_;
+  unsigned next_handle_ = 0x100;
+};
+
+}  // namespace
+
+void write_shadow_dxf(std::ostream& out, const nlohmann::json& document) {
+  std::set<std::string> layers{"faces"};
+  for (const auto& face : document.at("faces"))
+    for (const auto& light : face.at("lights")) {
+      layers.insert(light.at("light").get<std::string>() + "-shadow");
+      layers.insert(light.at("light").get<std::string>() + "-lit");
+    }
+  DxfWriter dxf(out);
+  dxf.tag(0, "SECTION");
+  dxf.tag(2, "HEADER");
+  dxf.tag(9, "$ACADVER");
+  dxf.tag(1, "AC1015");
+  dxf.tag(9, "$INSUNITS");
+  dxf.tag(70, "6");  // metres
+  dxf.tag(0, "ENDSEC");
+  dxf.tag(0, "SECTION");
+  dxf.tag(2, "TABLES");
+  dxf.tag(0, "TABLE");
+  dxf.tag(2, "LAYER");
+  dxf.tag(5, dxf.handle());
+  dxf.tag(100, "AcDbSymbolTable");
+  dxf.tag(70, std::to_string(layers.size()));
+  int colour = 1;
+  for (const std::string& layer : layers) {
+    dxf.tag(0, "LAYER");
+    dxf.tag(5, dxf.handle());
+    dxf.tag(100, "AcDbSymbolTableRecord");
+    dxf.tag(100, "AcDbLayerTableRecord");
+    dxf.tag(2, layer);
+    dxf.tag(70, "0");
+    dxf.tag(62, std::to_string(layer == "faces" ? 7 : colour++ % 6 + 1));
+    dxf.tag(6, "CONTINUOUS");
+  }
+  dxf.tag(0, "ENDTAB");
+  dxf.tag(0, "ENDSEC");
+  dxf.tag(0, "SECTION");
+  dxf.tag(2, "ENTITIES");
+  for (const auto& face : document.at("faces")) {
+    const auto& plane = face.at("plane");
+    const Vec normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
+    dxf.polyline("faces", face.at("boundary"), normal);
+    for (const auto& light : face.at("lights")) {
+      if (light.value("beyond_range", false)) continue;
+      const std::string name = light.at("light");
+      for (const char* kind : {"shadow", "lit"})
+        for (const auto& polygon : light.at(kind).at("polygons")) {
+          dxf.polyline(name + "-" + kind, polygon.at("outer"), normal);
+          for (const auto& hole : polygon.at("holes"))
+            dxf.polyline(name + "-" + kind, hole, normal);
+        }
+    }
+  }
+  dxf.tag(0, "ENDSEC");
+  dxf.tag(0, "EOF");
+}
+
+}  // namespace penumbra::io

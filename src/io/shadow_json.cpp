@@ -1,0 +1,198 @@
+#include "penumbra/io/shadow_json.h"
+
+#include <cmath>
+
+#include "penumbra/io/rational.h"
+
+namespace penumbra::io {
+namespace {
+
+using nlohmann::json;
+
+// rounds from the exact value, never from the lazy kernel's interval, whose width
+// depends on what was evaluated before (and so on threads); adding +0.0 turns -0.0
+// into 0.0, so that equal points print alike.
+double rounded(const Exact& x) {
+  return CGAL::to_double(x.exact()) + 0.0;
+}
+
+json point_json(const Point3& p) {
+  return json::array({rounded(p.x()), rounded(p.y()), rounded(p.z())});
+}
+
+// the unit vector along v, rounded from v's exact coordinates.
+json unit_json(const Vector3& v) {
+  const double x = rounded(v.x()), y = rounded(v.y()), z = rounded(v.z());
+  const double length = std::sqrt(x * x + y * y + z * z);
+  return json::array({x / length + 0.0, y / length + 0.0, z / length + 0.0});
+}
+
+json exact_point_json(const Point3& p) {
+  return json::array({rational_string(p.x()), rational_string(p.y()), rational_string(p.z())});
+}
+
+json ring_json(const Ring2& ring, const Face& face, bool exact) {
+  json points = json::array();
+  for (const Point2& p : ring)
+    points.push_back(exact ? exact_point_json(face.frame.to_world(p))
+                           : point_json(face.frame.to_world(p)));
+  return points;
+}
+
+json region_json(const Region2& region, const Face& face, bool exact) {
+  json polygons = json::array();
+  for (const Polygon2& polygon : region.polygons) {
+    json entry = {{"outer", ring_json(polygon.outer, face, false)}, {"holes", json::array()}};
+    for (const Ring2& hole : polygon.holes) entry["holes"].push_back(ring_json(hole, face, false));
+    if (exact) {
+      json rationals = {{"outer", ring_json(polygon.outer, face, true)}, {"holes", json::array()}};
+      for (const Ring2& hole : polygon.holes)
+        rationals["holes"].push_back(ring_json(hole, face, true));
+      entry["exact"] = std::move(rationals);
+    }
+    polygons.push_back(std::move(entry));
+  }
+  return {{"area", world_area(region, face)}, {"polygons", std::move(polygons)}};
+}
+
+// the plane scaled to a unit normal, in doubles; exactly, scaled so that its largest
+// normal component has magnitude 1 (a canonical exact form).
+json plane_json(const Plane3& plane, bool exact) {
+  const double a = rounded(plane.a()), b = rounded(plane.b()), c = rounded(plane.c()),
+               d = rounded(plane.d());
+  const double length = std::sqrt(a * a + b * b + c * c);
+  if (!exact)
+    return json::array({a / length + 0.0, b / length + 0.0, c / length + 0.0, d / length + 0.0});
+  Exact scale = CGAL::abs(plane.a());
+  for (const Exact& k : {plane.b(), plane.c()})
+    if (CGAL::abs(k) > scale) scale = CGAL::abs(k);
+  return json::array({rational_string(plane.a() / scale), rational_string(plane.b() / scale),
+                      rational_string(plane.c() / scale), rational_string(plane.d() / scale)});
+}
+
+const char* kind_of(const Light& light) {
+  if (std::holds_alternative<PointLight>(light.source)) return "point";
+  if (std::holds_alternative<LinearLight>(light.source)) return "linear";
+  return "directional";
+}
+
+bool holds_objects(const json& node) {
+  if (node.is_object()) return true;
+  if (node.is_array())
+    for (const json& item : node)
+      if (holds_objects(item)) return true;
+  return false;
+}
+
+void format(std::string& out, const json& node, int depth) {
+  const std::string indent(static_cast<std::size_t>(depth) + 1, ' ');
+  const std::string closing(static_cast<std::size_t>(depth), ' ');
+  if (node.is_object() && !node.empty()) {
+    out += "{\n";
+    std::size_t k = 0;
+    for (const auto& [key, value] : node.items()) {
+      out += indent + json(key).dump() + ": ";
+      format(out, value, depth + 1);
+      out += ++k < node.size() ? ",\n" : "\n";
+    }
+    out += closing + "}";
+  } else if (node.is_array() && holds_objects(node)) {
+    out += "[\n";
+    for (std::size_t k = 0; k < node.size(); ++k) {
+      out += indent;
+      format(out, node[k], depth + 1);
+      out += k + 1 < node.size() ? ",\n" : "\n";
+    }
+    out += closing + "]";
+  } else {
+    out += node.dump();
+  }
+}
+
+}  // namespace
+
+std::string format_json(const json& document) {
+  std::string out;
+  format(out, document, 0);
+  return out + "\n";
+}
+
+double world_area(const Region2& region, const Face& face) {
+  const double uu = rounded(face.frame.u() * face.frame.u());
+  const double vv = rounded(face.frame.v() * face.frame.v());
+  return rounded(region.area) * std::sqrt(uu * vv);
+}
+
+json shadow_json(const Scene& scene, const ShadowResult& result, const ShadowJsonOptions& options) {
+  json document = {{"penumbra_shadows", 1}};
+  json culling = {{"range_fraction", options.range_fraction}};
+  if (options.range_lux) culling = {{"range_lux", *options.range_lux}};
+  document["culling"] = culling;
+
+  json lights = json::array();
+  for (const LightShadows& shadows : result.lights) {
+    const ShadowStats& stats = shadows.stats;
+    json entry = {{"name", scene.lights[shadows.light].name},
+                  {"kind", kind_of(scene.lights[shadows.light])},
+                  {"faces", stats.faces},
+                  {"faces_away", stats.faces_away},
+                  {"beyond_range", stats.beyond_range},
+                  {"pairs_possible", stats.pairs_possible},
+                  {"pairs_tested", stats.pairs_tested},
+                  {"pairs_shadowing", stats.pairs_shadowing}};
+    if (stats.radius) entry["sphere_of_lighting_radius"] = *stats.radius;
+    lights.push_back(std::move(entry));
+  }
+  document["lights"] = std::move(lights);
+
+  json faces = json::array();
+  for (std::size_t r = 0; r < result.receivers.size(); ++r) {
+    const Object& object = scene.objects[result.receivers[r].object];
+    const Face& face = object.solid.faces()[result.receivers[r].face];
+    const Ring2 ring = face_ring(face);
+    json entry = {{"object", object.name},
+                  {"face", result.receivers[r].face},
+                  {"plane", plane_json(face.plane, false)},
+                  {"frame",
+                   {{"origin", point_json(face.frame.origin())},
+                    {"u", unit_json(face.frame.u())},
+                    {"v", unit_json(face.frame.v())}}},
+                  {"boundary", ring_json(ring, face, false)},
+                  {"area", world_area(convex_region(ring), face)}};
+    if (options.exact)
+      entry["exact"] = {{"plane", plane_json(face.plane, true)},
+                        {"boundary", ring_json(ring, face, true)}};
+    json per_light = json::array();
+    for (const LightShadows& shadows : result.lights) {
+      const FaceShadow& shadow = shadows.faces[r];
+      json item = {{"light", scene.lights[shadows.light].name},
+                   {"faces_away", shadow.faces_away},
+                   {"joint_occlusion", false}};
+      if (shadow.beyond_range) {
+        item["beyond_range"] = true;
+        per_light.push_back(std::move(item));
+        continue;
+      }
+      item["shadow"] = region_json(shadow.shadow, face, options.exact);
+      item["umbra"] = item["shadow"];
+      item["penumbra"] = {{"area", 0.0}, {"polygons", json::array()}};
+      item["lit"] = region_json(shadow.lit, face, options.exact);
+      json occluders = json::array();
+      for (const OccluderShadow& occluder : shadow.occluders) {
+        json o = {{"object", scene.objects[occluder.occluder].name},
+                  {"polygon", ring_json(occluder.polygon, face, false)},
+                  {"area", world_area(convex_region(occluder.polygon), face)}};
+        if (options.exact) o["exact"] = {{"polygon", ring_json(occluder.polygon, face, true)}};
+        occluders.push_back(std::move(o));
+      }
+      item["occluders"] = std::move(occluders);
+      per_light.push_back(std::move(item));
+    }
+    entry["lights"] = std::move(per_light);
+    faces.push_back(std::move(entry));
+  }
+  document["faces"] = std::move(faces);
+  return document;
+}
+
+}  // namespace penumbra::io

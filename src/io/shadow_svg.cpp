@@ -1,0 +1,256 @@
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <sstream>
+
+#include "penumbra/io/shadow_drawing.h"
+
+namespace penumbra::io {
+namespace {
+
+using nlohmann::json;
+using Vec = std::array<double, 3>;
+using Flat = std::array<double, 2>;
+
+const char* const palette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+Vec sub(const Vec& a, const Vec& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+double dot(const Vec& a, const Vec& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Vec unit(const Vec& a) {
+  const double length = std::sqrt(dot(a, a));
+  return {a[0] / length, a[1] / length, a[2] / length};
+}
+
+// A projection of world points to drawing coordinates (before fitting to the sheet);
+// nullopt when a point cannot be drawn (behind the camera).
+using Projection = std::function<std::optional<Flat>(const Vec&)>;
+
+struct Shape {
+  std::vector<std::vector<Flat>> rings;
+  std::string style;
+};
+
+// a face's drawing: its outline and the shadows of each light on it.
+struct FaceDrawing {
+  double depth;  // drawn from largest to smallest
+  std::vector<Shape> shapes;
+};
+
+std::optional<std::vector<Flat>> project_ring(const json& ring, const Projection& project) {
+  std::vector<Flat> out;
+  for (const auto& point : ring) {
+    const auto p = project(point.get<Vec>());
+    if (!p) return std::nullopt;
+    out.push_back(*p);
+  }
+  return out;
+}
+
+std::optional<FaceDrawing> draw_face(const json& face, const std::vector<std::string>& lights,
+                                     const Projection& project, double depth) {
+  FaceDrawing drawing{depth, {}};
+  const auto outline = project_ring(face.at("boundary"), project);
+  if (!outline) return std::nullopt;
+  drawing.shapes.push_back({{*outline}, "fill=\"#f4f4f4\" stroke=\"#333\" stroke-width=\"1\""});
+  for (const auto& light : face.at("lights")) {
+    if (light.value("beyond_range", false)) continue;
+    const auto index = std::find(lights.begin(), lights.end(), light.at("light")) - lights.begin();
+    const std::string colour = palette[index % 6];
+    for (const auto& polygon : light.at("shadow").at("polygons")) {
+      Shape shape{{},
+                  "fill=\"" + colour + "\" fill-opacity=\"0.45\" fill-rule=\"evenodd\" stroke=\"" +
+                      colour + "\" stroke-width=\"0.5\""};
+      const auto outer = project_ring(polygon.at("outer"), project);
+      if (!outer) continue;
+      shape.rings.push_back(*outer);
+      for (const auto& hole : polygon.at("holes"))
+        if (auto ring = project_ring(hole, project)) shape.rings.push_back(*ring);
+      drawing.shapes.push_back(std::move(shape));
+    }
+  }
+  return drawing;
+}
+
+// fits the drawings into a box of the given size (y up in the drawings, down in SVG).
+void emit(std::ostream& out, std::vector<FaceDrawing> drawings, double x0, double y0, double width,
+          double height, bool flip_y) {
+  double min_x = INFINITY, min_y = INFINITY, max_x = -INFINITY, max_y = -INFINITY;
+  for (const auto& drawing : drawings)
+    for (const auto& shape : drawing.shapes)
+      for (const auto& ring : shape.rings)
+        for (const Flat& p : ring) {
+          min_x = std::min(min_x, p[0]), max_x = std::max(max_x, p[0]);
+          min_y = std::min(min_y, p[1]), max_y = std::max(max_y, p[1]);
+        }
+  if (!(max_x >= min_x)) return;
+  const double scale =
+      std::min(width / std::max(max_x - min_x, 1e-9), height / std::max(max_y - min_y, 1e-9));
+  std::stable_sort(drawings.begin(), drawings.end(),
+                   [](const FaceDrawing& a, const FaceDrawing& b) { return a.depth > b.depth; });
+  for (const auto& drawing : drawings)
+    for (const auto& shape : drawing.shapes) {
+      out << "<path " << shape.style << " d=\"";
+      for (const auto& ring : shape.rings) {
+        for (std::size_t k = 0; k < ring.size(); ++k) {
+          const double x = x0 + (ring[k][0] - min_x) * scale;
+          const double y =
+              flip_y ? y0 + (max_y - ring[k][1]) * scale : y0 + (ring[k][1] - min_y) * scale;
+          out << (k ? " L" : "M") << x << " " << y;
+        }
+        out << " Z ";
+      }
+      out << "\"/>\n";
+    }
+}
+
+}  // namespace
+
+std::optional<SvgView> parse_svg_view(const std::string& name) {
+  if (name == "top") return SvgView::top;
+  if (name == "camera") return SvgView::camera;
+  if (name == "faces") return SvgView::faces;
+  return std::nullopt;
+}
+
+void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
+                      const std::optional<Camera>& camera) {
+  std::vector<std::string> lights;
+  for (const auto& light : document.at("lights")) lights.push_back(light.at("name"));
+  const auto& faces = document.at("faces");
+  const double sheet_width = 900;
+  const double legend_height = 30 + 20.0 * static_cast<double>(lights.size() + 1);
+  double sheet_height = 700;
+
+  std::ostringstream body;
+  body << std::setprecision(6);
+  if (view == SvgView::faces) {
+    // One panel per face that some light reaches, drawn in the face's own frame.
+    const int columns = 4;
+    const double panel = sheet_width / columns;
+    int index = 0;
+    for (const auto& face : faces) {
+      bool reached = false;
+      for (const auto& light : face.at("lights"))
+        reached =
+            reached || (!light.at("faces_away").get<bool>() && !light.value("beyond_range", false));
+      if (!reached) continue;
+      const Vec origin = face.at("frame").at("origin").get<Vec>();
+      const Vec u = face.at("frame").at("u").get<Vec>(), v = face.at("frame").at("v").get<Vec>();
+      const Projection project = [&](const Vec& p) -> std::optional<Flat> {
+        return Flat{dot(sub(p, origin), u), dot(sub(p, origin), v)};
+      };
+      const double x0 = (index % columns) * panel, y0 = legend_height + (index / columns) * panel;
+      body << "<g>\n<text x=\"" << x0 + 10 << "\" y=\"" << y0 + 16
+           << "\" font-family=\"sans-serif\" font-size=\"12\">"
+           << escape(face.at("object").get<std::string>()) << " face " << face.at("face").get<int>()
+           << "</text>\n";
+      if (auto drawing = draw_face(face, lights, project, 0))
+        emit(body, {*drawing}, x0 + 10, y0 + 24, panel - 20, panel - 34, true);
+      body << "</g>\n";
+      ++index;
+    }
+    sheet_height = legend_height + std::ceil(index / double(columns)) * panel + 10;
+  } else {
+    std::vector<FaceDrawing> drawings;
+    Projection project;
+    std::function<std::optional<double>(const json&)> depth_of;
+    if (view == SvgView::top) {
+      // Plan view: faces turned up, lowest first.
+      project = [](const Vec& p) -> std::optional<Flat> { return Flat{p[0], p[1]}; };
+      depth_of = [](const json& face) -> std::optional<double> {
+        if (face.at("plane")[2].get<double>() <= 0) return std::nullopt;
+        double top = -INFINITY;
+        for (const auto& p : face.at("boundary")) top = std::max(top, p[2].get<double>());
+        return -top;
+      };
+    } else {
+      const Vec eye = camera->eye;
+      const Vec forward = unit(sub(camera->target, eye));
+      const Vec right = unit(cross(forward, camera->up));
+      const Vec up = cross(right, forward);
+      const double pi = std::acos(-1.0);
+      const double focal = 0.5 * camera->height / std::tan(camera->fov_deg * pi / 360);
+      project = [=](const Vec& p) -> std::optional<Flat> {
+        const Vec d = sub(p, eye);
+        const double z = dot(d, forward);
+        if (z <= 0) return std::nullopt;
+        return Flat{focal * dot(d, right) / z, focal * dot(d, up) / z};
+      };
+      // Faces turned toward the eye, farthest first (painter's order).
+      depth_of = [=](const json& face) -> std::optional<double> {
+        const auto& plane = face.at("plane");
+        const Vec normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
+        const Vec first = face.at("boundary")[0].get<Vec>();
+        if (dot(normal, sub(eye, first)) <= 0) return std::nullopt;
+        Vec centre{0, 0, 0};
+        for (const auto& p : face.at("boundary"))
+          for (int i = 0; i < 3; ++i)
+            centre[i] += p[i].get<double>() / static_cast<double>(face.at("boundary").size());
+        return std::sqrt(dot(sub(centre, eye), sub(centre, eye)));
+      };
+    }
+    for (const auto& face : faces)
+      if (const auto depth = depth_of(face))
+        if (auto drawing = draw_face(face, lights, project, *depth))
+          drawings.push_back(std::move(*drawing));
+    emit(body, std::move(drawings), 20, legend_height, sheet_width - 40,
+         sheet_height - legend_height - 20, true);
+  }
+
+  out << std::setprecision(6);
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << sheet_width << "\" height=\""
+      << sheet_height << "\" viewBox=\"0 0 " << sheet_width << " " << sheet_height << "\">\n"
+      << "<title>penumbra shadows</title>\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  // Legend: one swatch per light, and the face fill.
+  out << "<g font-family=\"sans-serif\" font-size=\"13\">\n<text x=\"20\" y=\"20\">shadows ("
+      << (view == SvgView::top      ? "plan view"
+          : view == SvgView::camera ? "camera view"
+                                    : "per face")
+      << ")</text>\n";
+  double y = 30;
+  out << "<rect x=\"20\" y=\"" << y
+      << "\" width=\"14\" height=\"14\" fill=\"#f4f4f4\" stroke=\"#333\"/>"
+      << "<text x=\"40\" y=\"" << y + 12 << "\">face</text>\n";
+  for (std::size_t k = 0; k < lights.size(); ++k) {
+    y += 20;
+    out << "<rect x=\"20\" y=\"" << y << "\" width=\"14\" height=\"14\" fill=\"" << palette[k % 6]
+        << "\" fill-opacity=\"0.45\"/><text x=\"40\" y=\"" << y + 12 << "\">shadow of "
+        << escape(lights[k]) << "</text>\n";
+  }
+  out << "</g>\n" << body.str() << "</svg>\n";
+}
+
+}  // namespace penumbra::io

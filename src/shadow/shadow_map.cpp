@@ -1,0 +1,154 @@
+#include "penumbra/shadow/shadow_map.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+#include <tbb/parallel_for.h>
+
+#include "penumbra/input_error.h"
+#include "penumbra/shadow/shadow_polygon.h"
+#include "penumbra/visibility/lighting_sphere.h"
+
+namespace penumbra {
+namespace {
+
+std::optional<LightPosition> position_of(const Light& light) {
+  if (const auto* point = std::get_if<PointLight>(&light.source))
+    return LightPosition::at(to_exact(point->position));
+  if (const auto* sun = std::get_if<DirectionalLight>(&light.source))
+    return LightPosition::toward(to_exact_vector(sun->direction));
+  return std::nullopt;
+}
+
+std::optional<LightingSphere> sphere_of(const Light& light, const ShadowOptions& options) {
+  const auto* point = std::get_if<PointLight>(&light.source);
+  if (!point) return std::nullopt;
+  const Point3 centre = to_exact(point->position);
+  if (options.range_lux)
+    return LightingSphere::absolute(centre, point->distribution->max_intensity(),
+                                    *options.range_lux);
+  if (options.range_fraction > 0) return LightingSphere::relative(centre, options.range_fraction);
+  return std::nullopt;
+}
+
+LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receivers,
+                         const std::vector<std::size_t>& rank, std::size_t light_index,
+                         const ShadowOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const Light& light = scene.lights[light_index];
+  const LightPosition position = *position_of(light);
+  const auto sphere = sphere_of(light, options);
+
+  LightShadows result;
+  result.light = light_index;
+  result.faces.resize(receivers.size());
+  ShadowStats& stats = result.stats;
+  stats.faces = receivers.size();
+  stats.pairs_possible = receivers.size() * (scene.objects.size() - 1);
+  if (sphere) stats.radius = sphere->radius();
+
+  // Culling: faces turned away are wholly unlit; faces outside the sphere of
+  // lighting are not computed (Nishita 1985 section 3.1).
+  std::vector<Receiver> active;
+  std::vector<std::size_t> active_index;
+  for (std::size_t r = 0; r < receivers.size(); ++r) {
+    const Face& face = scene.objects[receivers[r].object].solid.faces()[receivers[r].face];
+    if (faces_away(face, position)) {
+      result.faces[r] = unlit_face(face);
+      ++stats.faces_away;
+    } else if (sphere && sphere->beyond(face)) {
+      result.faces[r].beyond_range = true;
+      ++stats.beyond_range;
+    } else {
+      active.push_back(receivers[r]);
+      active_index.push_back(r);
+    }
+  }
+
+  std::vector<std::vector<std::size_t>> candidates;
+  if (options.broad_phase) {
+    std::vector<const ConvexPolyhedron*> solids;
+    for (const Object& object : scene.objects) solids.push_back(&object.solid);
+    candidates = candidate_occluders(solids, active, position);
+  } else {
+    candidates.resize(active.size());
+    for (std::size_t a = 0; a < active.size(); ++a)
+      for (std::size_t o = 0; o < scene.objects.size(); ++o)
+        if (o != active[a].object) candidates[a].push_back(o);
+  }
+  // Canonical order of occluders: by object name (rank), whatever the input order.
+  for (auto& list : candidates) {
+    std::sort(list.begin(), list.end(),
+              [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
+    stats.pairs_tested += list.size();
+  }
+
+  auto shade = [&](std::size_t a) {
+    const Face& face = scene.objects[active[a].object].solid.faces()[active[a].face];
+    std::vector<OccluderShadow> shadows;
+    for (std::size_t occluder : candidates[a])
+      if (auto polygon = shadow_polygon(scene.objects[occluder].solid, face, position))
+        shadows.push_back({occluder, std::move(*polygon)});
+    result.faces[active_index[a]] = unite_shadows(face, std::move(shadows));
+  };
+  if (options.parallel)
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active.size()),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t a = range.begin(); a != range.end(); ++a) shade(a);
+                      });
+  else
+    for (std::size_t a = 0; a < active.size(); ++a) shade(a);
+
+  for (const FaceShadow& face : result.faces) stats.pairs_shadowing += face.occluders.size();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace
+
+ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
+  ShadowResult result;
+  // Canonical order: objects by name (names are unique), faces by canonical index.
+  std::vector<std::size_t> by_name(scene.objects.size());
+  std::iota(by_name.begin(), by_name.end(), 0);
+  std::sort(by_name.begin(), by_name.end(), [&](std::size_t a, std::size_t b) {
+    return scene.objects[a].name < scene.objects[b].name;
+  });
+  std::vector<std::size_t> rank(scene.objects.size());
+  for (std::size_t k = 0; k < by_name.size(); ++k) rank[by_name[k]] = k;
+  for (std::size_t object : by_name)
+    for (std::size_t f = 0; f < scene.objects[object].solid.faces().size(); ++f)
+      result.receivers.push_back({object, f});
+
+  std::vector<std::size_t> lights;
+  if (options.light) {
+    const Light* light = scene.find_light(*options.light);
+    if (!light)
+      throw InputError(scene.file.string(), "lights",
+                       "there is no light named '" + *options.light + "'");
+    if (!position_of(*light))
+      throw InputError(scene.file.string(), light->json_path,
+                       "light '" + light->name +
+                           "' is linear: shadows of linear sources are not computed by this "
+                           "verb yet (issue 4)");
+    lights.push_back(static_cast<std::size_t>(light - scene.lights.data()));
+  } else {
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+      if (position_of(scene.lights[k]))
+        lights.push_back(k);
+      else
+        result.warnings.push_back("light '" + scene.lights[k].name +
+                                  "' is linear: its shadows are not computed yet (issue 4)");
+    }
+  }
+  // Lights in name order, for the same reason as objects.
+  std::sort(lights.begin(), lights.end(), [&](std::size_t a, std::size_t b) {
+    return scene.lights[a].name < scene.lights[b].name;
+  });
+  for (std::size_t light : lights)
+    result.lights.push_back(shade_scene(scene, result.receivers, rank, light, options));
+  return result;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,36 @@
+#include "penumbra/visibility/lighting_sphere.h"
+
+#include <cmath>
+
+namespace penumbra {
+
+LightingSphere LightingSphere::relative(const Point3& centre, double fraction) {
+  CGAL_precondition(fraction > 0);
+  LightingSphere sphere;
+  sphere.centre_ = centre;
+  // I_max / r^2 = fraction * I_max / (1 m)^2, for any I_max > 0.
+  sphere.squared_radius_ = Exact(1) / Exact(fraction);
+  return sphere;
+}
+
+LightingSphere LightingSphere::absolute(const Point3& centre, double max_candela, double lux) {
+  CGAL_precondition(lux > 0);
+  LightingSphere sphere;
+  sphere.centre_ = centre;
+  sphere.squared_radius_ = Exact(max_candela) / Exact(lux);
+  return sphere;
+}
+
+double LightingSphere::radius() const {
+  return std::sqrt(CGAL::to_double(squared_radius_.exact()));
+}
+
+bool LightingSphere::beyond(const Face& face) const {
+  const std::vector<Point3>& v = face.vertices;
+  for (std::size_t k = 1; k + 1 < v.size(); ++k)
+    if (CGAL::squared_distance(centre_, Triangle3(v[0], v[k], v[k + 1])) <= squared_radius_)
+      return false;
+  return true;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# The SVG, DXF and CSV outputs of `penumbra shadows`, read by real tools: the SVG by
+# xmllint (libxml2), the DXF by ezdxf (its auditor must find no error, and every
+# polyline's world coordinates must be the JSON's), the CSV by Python's csv module
+# (areas add up per face). Usage: outputs_test.sh PENUMBRA SOURCE_DIR
+set -euo pipefail
+penumbra=$1
+source_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+python=/usr/bin/python3
+
+for scene in every-kind shadow-cube-point shadow-shared-face; do
+  file="$source_dir/fixtures/scenes/$scene.json"
+  for view in top faces camera; do
+    if [ "$view" = camera ] && ! grep -q '"camera"' "$file"; then continue; fi
+    "$penumbra" shadows "$file" -o "$work/$scene.json" --svg "$work/$scene-$view.svg" --view "$view" \
+      --dxf "$work/$scene.dxf" --report "$work/$scene.csv"
+    xmllint --noout "$work/$scene-$view.svg"
+    grep -q '<path' "$work/$scene-$view.svg"
+  done
+  "$python" - "$work/$scene.json" "$work/$scene.dxf" "$work/$scene.csv" <<'PY'
+import csv, json, sys
+import ezdxf
+from ezdxf import recover
+
+loops = json.load(open(sys.argv[1]))
+doc, auditor = recover.readfile(sys.argv[2])
+assert not auditor.has_errors, [str(e) for e in auditor.errors]
+doc = ezdxf.readfile(sys.argv[2])
+
+# Expected rings per layer from the JSON, in world coordinates.
+expected = {}
+def add(layer, ring):
+    expected.setdefault(layer, []).append(ring)
+for face in loops["faces"]:
+    add("faces", face["boundary"])
+    for light in face["lights"]:
+        if light.get("beyond_range"):
+            continue
+        for kind in ("shadow", "lit"):
+            for polygon in light[kind]["polygons"]:
+                add(f'{light["light"]}-{kind}', polygon["outer"])
+                for hole in polygon["holes"]:
+                    add(f'{light["light"]}-{kind}', hole)
+
+found = {}
+for entity in doc.modelspace():
+    assert entity.dxftype() == "LWPOLYLINE", entity.dxftype()
+    assert entity.closed
+    found.setdefault(entity.dxf.layer, []).append([list(v) for v in entity.vertices_in_wcs()])
+assert sorted(found) == sorted(expected), (sorted(found), sorted(expected))
+for layer, rings in expected.items():
+    got = found[layer]
+    assert len(got) == len(rings), layer
+    for ring, back in zip(rings, got):
+        assert len(ring) == len(back)
+        for p, q in zip(ring, back):
+            assert all(abs(a - b) <= 1e-9 * max(1.0, abs(a)) for a, b in zip(p, q)), (layer, p, q)
+    assert doc.layers.has_entry(layer), layer
+
+rows = list(csv.DictReader(open(sys.argv[3])))
+assert rows and set(rows[0]) >= {"object", "face", "light", "face_area", "shadow_area", "lit_area",
+                                 "shadow_percent", "faces_away"}
+for row in rows:
+    if row["beyond_range"] == "true":
+        continue
+    face, shadow, lit = float(row["face_area"]), float(row["shadow_area"]), float(row["lit_area"])
+    assert abs(face - shadow - lit) <= 1e-9 * max(1.0, face), row
+    assert abs(float(row["shadow_percent"]) - 100 * shadow / face) <= 1e-9, row
+    if row["faces_away"] == "true":
+        assert lit == 0, row
+print(f"{sys.argv[1]}: DXF and CSV read back: {sum(len(r) for r in found.values())} polylines, {len(rows)} rows")
+PY
+done
+echo "outputs: SVG, DXF and CSV read by xmllint, ezdxf and csv"
