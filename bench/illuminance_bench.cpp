@@ -161,8 +161,10 @@ struct SceneWorkload {
       const double x = coordinate(engine), y = coordinate(engine);
       const bool table = k < 30;
       const Vec3d lo = table ? Vec3d{x, y, 0.7} : Vec3d{x, y, height(engine)};
-      const Vec3d hi = table ? Vec3d{x + 1, y + 0.6, 0.74} : Vec3d{lo[0] + 0.3, lo[1] + 0.3, lo[2] + 0.3};
-      scene.objects.push_back({"occluder" + std::to_string(k), "box", 0, box_solid(lo, hi), {}, ""});
+      const Vec3d hi =
+          table ? Vec3d{x + 1, y + 0.6, 0.74} : Vec3d{lo[0] + 0.3, lo[1] + 0.3, lo[2] + 0.3};
+      scene.objects.push_back(
+          {"occluder" + std::to_string(k), "box", 0, box_solid(lo, hi), {}, ""});
     }
     scene.lights.push_back({"tube", penumbra::LinearLight{{4, 6, 3}, {8, 6, 3}, 150}, ""});
     solver = std::make_unique<il::IlluminanceSolver>(scene);
@@ -186,7 +188,8 @@ void scene_linear_100_occluders(benchmark::State& state) {
   const SceneWorkload& scene = scene_workload();
   const auto& points = scene.points[state.range(0)];
   std::size_t i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(scene.solver->light_at(0, points[i++ & 255], {0, 0, 1}));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(scene.solver->light_at(0, points[i++ & 255], {0, 0, 1}));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
   static const char* labels[] = {"unshadowed", "penumbra", "umbra"};
   state.SetLabel(labels[state.range(0)]);
@@ -200,18 +203,26 @@ void scene_point_and_sun_100_occluders(benchmark::State& state) {
     penumbra::Scene scene = scene_workload().scene;
     scene.lights.clear();
     scene.lights.push_back(
-        {"lamp", penumbra::PointLight{{6, 6, 3}, penumbra::photometry::make_isotropic(500), {0, 0, -1}, {1, 0, 0}, nullptr}, ""});
+        {"lamp",
+         penumbra::PointLight{
+             {6, 6, 3}, penumbra::photometry::make_isotropic(500), {0, 0, -1}, {1, 0, 0}, nullptr},
+         ""});
     scene.lights.push_back({"sun", penumbra::DirectionalLight{{0.3, 0.4, -0.87}, 60000}, ""});
     return il::IlluminanceSolver(scene);
   }();
   const auto& points = scene_workload().points[state.range(1) == 0 ? 0 : 2];
   std::size_t i = 0;
   for (auto _ : state)
-    benchmark::DoNotOptimize(solver.light_at(static_cast<std::size_t>(state.range(0)), points[i++ & 255], {0, 0, 1}));
+    benchmark::DoNotOptimize(
+        solver.light_at(static_cast<std::size_t>(state.range(0)), points[i++ & 255], {0, 0, 1}));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
   state.SetLabel(std::string(state.range(0) == 0 ? "point lamp" : "sun") +
                  (state.range(1) == 0 ? ", tube-unshadowed points" : ", tube-umbra points"));
 }
-BENCHMARK(scene_point_and_sun_100_occluders)->Args({0, 0})->Args({0, 1})->Args({1, 0})->Args({1, 1});
+BENCHMARK(scene_point_and_sun_100_occluders)
+    ->Args({0, 0})
+    ->Args({0, 1})
+    ->Args({1, 0})
+    ->Args({1, 1});
 
 }  // namespace

@@ -147,7 +147,9 @@ ApproximationError approximation_error(
     const double nudge = 1e-9 * (high - low);
     const int count = std::max(8, static_cast<int>(std::ceil(density * (high - low))));
     for (int k = 0; k <= count; ++k) {
-      double gamma = low + (high - low) * k / count;
+      // Reported at the breakpoint itself, evaluated just inside the interval.
+      const double reported = low + (high - low) * k / count;
+      double gamma = reported;
       if (k == 0) gamma += nudge;
       if (k == count) gamma -= nudge;
       for (double c : c_samples) {
@@ -155,7 +157,7 @@ ApproximationError approximation_error(
             std::abs(distribution.intensity(gamma, c) - approximation(gamma, c));
         if (difference > error.max_cd) {
           error.max_cd = difference;
-          error.max_gamma = gamma;
+          error.max_gamma = reported;
           error.max_c = c;
         }
       }

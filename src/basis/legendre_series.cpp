@@ -36,7 +36,7 @@ double LegendreSeries::at_cosine(double x) const {
   double previous = 1, current = x;
   double sum = weights_[0];
   if (weights_.size() > 1) sum += weights_[1] * x;
-  for (std::size_t l = 1; l + 1 < weights_.size(); ++l) {
+  for (int l = 1; l < degree(); ++l) {
     const double next = ((2 * l + 1) * x * current - l * previous) / (l + 1);
     previous = current;
     current = next;

@@ -59,7 +59,8 @@ std::vector<std::string_view> split(std::string_view line) {
   std::vector<std::string_view> fields;
   for (std::size_t start = 0;;) {
     const std::size_t comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
+    fields.push_back(
+        trim(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
     if (comma == std::string_view::npos) return fields;
     start = comma + 1;
   }
@@ -74,7 +75,8 @@ std::vector<Receiver> read_points(const std::string& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, "", "cannot open the points file");
   std::string line;
-  if (!std::getline(in, line)) throw InputError(file, "line 1", "empty file: expected a header x,y,z,nx,ny,nz");
+  if (!std::getline(in, line))
+    throw InputError(file, "line 1", "empty file: expected a header x,y,z,nx,ny,nz");
   if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark
   const std::vector<std::string_view> header = split(line);
   const char* names[6] = {"x", "y", "z", "nx", "ny", "nz"};
@@ -84,12 +86,14 @@ std::vector<Receiver> read_points(const std::string& file) {
     for (std::size_t k = 0; k < header.size(); ++k)
       if (header[k] == names[c]) {
         if (found != header.size())
-          throw InputError(file, "line 1", std::string("column \"") + names[c] + "\" appears twice");
+          throw InputError(file, "line 1",
+                           std::string("column \"") + names[c] + "\" appears twice");
         found = k;
       }
     if (found == header.size())
-      throw InputError(file, "line 1", std::string("missing column \"") + names[c] +
-                                           "\" (the header must name x,y,z,nx,ny,nz)");
+      throw InputError(
+          file, "line 1",
+          std::string("missing column \"") + names[c] + "\" (the header must name x,y,z,nx,ny,nz)");
     column[c] = found;
   }
 
@@ -99,24 +103,30 @@ std::vector<Receiver> read_points(const std::string& file) {
     const std::string where = "line " + std::to_string(number);
     const std::vector<std::string_view> fields = split(line);
     if (fields.size() != header.size())
-      throw InputError(file, where, "expected " + std::to_string(header.size()) + " fields as in the header, found " +
-                                        std::to_string(fields.size()));
+      throw InputError(file, where,
+                       "expected " + std::to_string(header.size()) +
+                           " fields as in the header, found " + std::to_string(fields.size()));
     double value[6];
     for (int c = 0; c < 6; ++c) {
       const std::string_view field = fields[column[c]];
       const char* end = field.data() + field.size();
       auto [stop, error] = std::from_chars(field.data(), end, value[c]);
       if (field.empty() || error != std::errc() || stop != end)
-        throw InputError(file, where + ", column " + names[c], "not a number: \"" + std::string(field) + "\"");
+        throw InputError(file, where + ", column " + names[c],
+                         "not a number: \"" + std::string(field) + "\"");
       if (!std::isfinite(value[c]))
-        throw InputError(file, where + ", column " + names[c], "not a finite number: \"" + std::string(field) + "\"");
+        throw InputError(file, where + ", column " + names[c],
+                         "not a finite number: \"" + std::string(field) + "\"");
     }
     Receiver receiver{{value[0], value[1], value[2]}, {value[3], value[4], value[5]}};
-    const double length = std::sqrt(value[3] * value[3] + value[4] * value[4] + value[5] * value[5]);
-    if (length == 0) throw InputError(file, where + ", columns nx,ny,nz", "the normal is the zero vector");
+    const double length =
+        std::sqrt(value[3] * value[3] + value[4] * value[4] + value[5] * value[5]);
+    if (length == 0)
+      throw InputError(file, where + ", columns nx,ny,nz", "the normal is the zero vector");
     if (std::abs(length - 1) > kNormalLengthTolerance)
-      throw InputError(file, where + ", columns nx,ny,nz",
-                       "the normal has length " + std::to_string(length) + "; give a unit vector (within 1e-3)");
+      throw InputError(
+          file, where + ", columns nx,ny,nz",
+          "the normal has length " + std::to_string(length) + "; give a unit vector (within 1e-3)");
     for (double& n : receiver.normal) n /= length;
     receivers.push_back(receiver);
   }
@@ -150,7 +160,8 @@ void write_values(std::ostream& out, const Scene& scene, const std::vector<Recei
     for (double component : receivers[k].normal) out << format_double(component) << ',';
     out << format_double(values[k].total);
     for (double value : values[k].per_light) out << ',' << format_double(value);
-    out << ',' << (values[k].inside ? csv_field(scene.objects[*values[k].inside].name) : "") << '\n';
+    out << ',' << (values[k].inside ? csv_field(scene.objects[*values[k].inside].name) : "")
+        << '\n';
   }
 }
 
@@ -201,12 +212,14 @@ int run_workplane(const IlluminanceArguments& arguments, const Scene& scene) {
   } else {
     throw InputError(arguments.scene, "objects", "the scene has no objects: give --region");
   }
-  if (!std::isfinite(*arguments.workplane)) throw InputError("", "--workplane", "not a finite height");
+  if (!std::isfinite(*arguments.workplane))
+    throw InputError("", "--workplane", "not a finite height");
   if (!(arguments.spacing > 0) || !std::isfinite(arguments.spacing))
     throw InputError("", "--spacing", "expected a positive spacing");
   const double cells = std::ceil((region.x1 - region.x0) / arguments.spacing) *
                        std::ceil((region.y1 - region.y0) / arguments.spacing);
-  if (cells > 1e8) throw InputError("", "--spacing", "more than 10^8 grid points: use a larger spacing");
+  if (cells > 1e8)
+    throw InputError("", "--spacing", "more than 10^8 grid points: use a larger spacing");
   std::vector<double> levels;
   if (!arguments.levels.empty()) {
     levels = parse_numbers(arguments.levels, "--levels");
@@ -214,39 +227,44 @@ int run_workplane(const IlluminanceArguments& arguments, const Scene& scene) {
     levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
   }
 
-  const il::WorkplaneGrid grid = il::make_workplane_grid(*arguments.workplane, arguments.spacing, region);
+  const il::WorkplaneGrid grid =
+      il::make_workplane_grid(*arguments.workplane, arguments.spacing, region);
   const il::IlluminanceSolver solver(scene);
   il::WorkplaneValues values;
   {
     io::Progress progress("work plane", grid.size());
-    values = il::evaluate_workplane(solver, grid, [&](std::size_t done) { progress.advance(done); });
+    values =
+        il::evaluate_workplane(solver, grid, [&](std::size_t done) { progress.advance(done); });
   }
   const il::WorkplaneStatistics statistics = il::workplane_statistics(values);
 
   if (!arguments.output.empty()) {
     std::vector<Receiver> receivers;
     for (std::size_t k = 0; k < grid.size(); ++k) receivers.push_back({grid.point(k), {0, 0, 1}});
-    io::write_atomically(arguments.output,
-                         [&](std::ostream& out) { write_values(out, scene, receivers, values.values); });
+    io::write_atomically(arguments.output, [&](std::ostream& out) {
+      write_values(out, scene, receivers, values.values);
+    });
   }
   if (!arguments.svg.empty()) {
     if (levels.empty()) levels = il::isolux_levels(statistics.minimum, statistics.maximum);
-    io::write_atomically(arguments.svg,
-                         [&](std::ostream& out) { il::write_isolux_svg(out, scene, values, levels); });
+    io::write_atomically(arguments.svg, [&](std::ostream& out) {
+      il::write_isolux_svg(out, scene, values, levels);
+    });
   }
 
   std::ostringstream report;
-  report << "work plane z = " << *arguments.workplane << " m, region " << region.x0 << ',' << region.y0
-         << " to " << region.x1 << ',' << region.y1 << ", " << grid.columns << " x " << grid.rows
-         << " cells of " << grid.cell_width << " x " << grid.cell_depth << " m: " << statistics.points
-         << " points";
+  report << "work plane z = " << *arguments.workplane << " m, region " << region.x0 << ','
+         << region.y0 << " to " << region.x1 << ',' << region.y1 << ", " << grid.columns << " x "
+         << grid.rows << " cells of " << grid.cell_width << " x " << grid.cell_depth
+         << " m: " << statistics.points << " points";
   if (statistics.excluded) report << " (" << statistics.excluded << " inside objects, not counted)";
   report << "\nE min " << statistics.minimum << " lx, average " << statistics.average << " lx, max "
-         << statistics.maximum << " lx, uniformity U0 = Emin/Eavg = " << statistics.uniformity << "\n";
+         << statistics.maximum << " lx, uniformity U0 = Emin/Eavg = " << statistics.uniformity
+         << "\n";
   for (std::size_t light = 0; light < scene.lights.size(); ++light) {
     const auto& [low, average, high] = statistics.per_light[light];
-    report << "  " << scene.lights[light].name << ": min " << low << " lx, average " << average << " lx, max "
-           << high << " lx\n";
+    report << "  " << scene.lights[light].name << ": min " << low << " lx, average " << average
+           << " lx, max " << high << " lx\n";
   }
   std::cout << report.str();
   return 0;
@@ -260,7 +278,8 @@ int run_illuminance(const IlluminanceArguments& arguments) {
   if (!arguments.workplane && (!arguments.svg.empty() || !arguments.region.empty()))
     throw InputError("", "", "--svg and --region apply to --workplane only");
   const Scene scene = load_scene(arguments.scene);
-  for (const std::string& warning : scene.warnings) std::cerr << "penumbra: warning: " << warning << "\n";
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "penumbra: warning: " << warning << "\n";
   return arguments.workplane ? run_workplane(arguments, scene) : run_points(arguments, scene);
 }
 
@@ -273,14 +292,17 @@ void register_illuminance(CLI::App& app) {
   verb->add_option("SCENE", arguments->scene, "scene file (JSON)")->required();
   verb->add_option("--points", arguments->points,
                    "CSV with header x,y,z,nx,ny,nz (unit normals; other columns ignored)");
-  verb->add_option("-o,--output", arguments->output,
-                   "CSV of x,y,z,nx,ny,nz,E,E[<light>]...,inside (--points: default standard output)");
-  verb->add_option("--workplane", arguments->workplane, "height z of a horizontal work plane (normal +z)");
+  verb->add_option(
+      "-o,--output", arguments->output,
+      "CSV of x,y,z,nx,ny,nz,E,E[<light>]...,inside (--points: default standard output)");
+  verb->add_option("--workplane", arguments->workplane,
+                   "height z of a horizontal work plane (normal +z)");
   verb->add_option("--spacing", arguments->spacing, "largest grid cell size on the work plane (m)");
   verb->add_option("--region", arguments->region,
                    "x0,y0,x1,y1: the work plane's extent (default: the scene's bounding box)");
   verb->add_option("--svg", arguments->svg, "isolux plot of the work plane (SVG)");
-  verb->add_option("--levels", arguments->levels, "isolux levels in lux, e.g. 100,200,500 (default: chosen)");
+  verb->add_option("--levels", arguments->levels,
+                   "isolux levels in lux, e.g. 100,200,500 (default: chosen)");
   verb->callback([arguments] { exit_status() = run_illuminance(*arguments); });
 }
 

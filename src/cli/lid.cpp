@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lid_fit.h"
 #include "penumbra/input_error.h"
 #include "penumbra/io/atomic_file.h"
 #include "penumbra/photometry/eulumdat.h"
@@ -234,12 +235,18 @@ void register_lid(CLI::App& app) {
   convert->add_option("-o,--output", options->output, "output .ies file")->required();
   convert->callback([options] { exit_status() = run_convert(options->source, options->output); });
 
-  CLI::App* fit =
-      lid->add_subcommand("fit", "Legendre / spherical harmonic weights [not built yet]");
-  fit->allow_extras();
-  fit->callback([] {
-    std::cerr << "penumbra lid fit: not built yet (issue #9)\n";
-    exit_status() = 2;
+  CLI::App* fit = lid->add_subcommand(
+      "fit", "Legendre weights, sigma factors and their error over the sphere (docs/basis.md)");
+  auto fit_options = std::make_shared<LidFitOptions>();
+  fit->add_option("FILE|SPEC", options->source, "photometric file or lid JSON")->required();
+  fit->add_option("--degree", fit_options->degree, "highest Legendre degree N, 0..60")->required();
+  fit->add_flag("--sigma", fit_options->sigma, "apply the sigma factors of Dobashi eq. (13)");
+  fit->add_flag("--json", fit_options->json, "print JSON");
+  fit->add_option("--interpolation", options->interpolation, "linear (default) or cosine");
+  fit->callback([options, fit_options] {
+    fit_options->distribution =
+        load_source(options->source, interpolation_named(options->interpolation)).distribution;
+    exit_status() = run_lid_fit(*fit_options);
   });
 }
 

@@ -4,12 +4,15 @@
 
 #include "lid_fit.h"
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "penumbra/basis/distribution_fit.h"
 #include "penumbra/basis/sigma_factors.h"
+#include "penumbra/basis/spherical_harmonics.h"
 #include "penumbra/input_error.h"
 
 namespace penumbra::cli {
@@ -42,6 +45,20 @@ int run_lid_fit(const LidFitOptions& options) {
   const basis::LegendreFit fit = basis::fit_legendre(distribution, options.degree, options.sigma);
   const std::vector<double>& weights = fit.series.weights();
   const std::vector<double> sigma = basis::sigma_factors(options.degree);
+  // For an asymmetric distribution, what fitting the whole distribution in SH of the
+  // same degree ((N + 1)^2 terms, as the radiosity basis needs anyway) would achieve.
+  std::optional<basis::ApproximationError> sh_error;
+  if (fit.azimuthal_average) {
+    const Eigen::VectorXd coefficients = basis::sh_coefficients_of(distribution, options.degree);
+    sh_error = basis::approximation_error(
+        distribution,
+        [&coefficients](double gamma, double c) {
+          return basis::evaluate_sh(
+              coefficients, Eigen::Vector3d(std::sin(gamma) * std::cos(c),
+                                            std::sin(gamma) * std::sin(c), std::cos(gamma)));
+        },
+        basis::breakpoints_of(distribution), options.degree);
+  }
 
   if (options.json) {
     nlohmann::json out;
@@ -54,6 +71,7 @@ int run_lid_fit(const LidFitOptions& options) {
     out["max_intensity_cd"] = distribution.max_intensity();
     out["error"] = error_json(fit.error);
     if (options.sigma) out["error_without_sigma"] = error_json(fit.error_without_sigma);
+    if (sh_error) out["sh_fit_error"] = error_json(*sh_error);
     std::cout << out.dump(2) << "\n";
     return 0;
   }
@@ -80,6 +98,9 @@ int run_lid_fit(const LidFitOptions& options) {
               fit.error, fit.azimuthal_average);
   if (options.sigma)
     print_error("error without sigma factors:", fit.error_without_sigma, fit.azimuthal_average);
+  if (sh_error)
+    print_error("for comparison, a spherical-harmonic fit of the whole distribution, same degree:",
+                *sh_error, true);
   return 0;
 }
 

@@ -91,7 +91,9 @@ Rgb scale_colour(double fraction) {
 
 std::string hex(const Rgb& colour, double darken = 1) {
   char text[8];
-  auto channel = [&](double c) { return static_cast<int>(std::lround(255 * std::clamp(c * darken, 0.0, 1.0))); };
+  auto channel = [&](double c) {
+    return static_cast<int>(std::lround(255 * std::clamp(c * darken, 0.0, 1.0)));
+  };
   std::snprintf(text, sizeof text, "#%02x%02x%02x", channel(colour.r), channel(colour.g),
                 channel(colour.b));
   return text;
@@ -156,8 +158,8 @@ std::vector<double> isolux_levels(double minimum, double maximum) {
   const double floor_value = std::max(minimum, maximum * 1e-3);
   if (floor_value > 0 && maximum / floor_value > 20) {
     // 1-2-5 series: one decade per three lines suits a range of several decades.
-    for (double decade = std::pow(10.0, std::floor(std::log10(floor_value)));
-         decade <= maximum; decade *= 10)
+    for (double decade = std::pow(10.0, std::floor(std::log10(floor_value))); decade <= maximum;
+         decade *= 10)
       for (double mantissa : {1.0, 2.0, 5.0}) {
         const double level = mantissa * decade;
         if (level > floor_value && level < maximum) levels.push_back(level);
@@ -183,15 +185,21 @@ std::vector<IsoluxLine> isolux_lines(const WorkplaneValues& values,
   std::vector<IsoluxLine> lines;
   if (grid.columns < 2 || grid.rows < 2) return lines;
   const auto index = [&](std::size_t i, std::size_t j) { return j * grid.columns + i; };
-  const auto horizontal = [&](std::size_t i, std::size_t j) { return 2 * static_cast<long>(index(i, j)); };
-  const auto vertical = [&](std::size_t i, std::size_t j) { return 2 * static_cast<long>(index(i, j)) + 1; };
+  const auto horizontal = [&](std::size_t i, std::size_t j) {
+    return 2 * static_cast<long>(index(i, j));
+  };
+  const auto vertical = [&](std::size_t i, std::size_t j) {
+    return 2 * static_cast<long>(index(i, j)) + 1;
+  };
   for (double level : levels) {
     std::vector<Segment> segments;
     for (std::size_t j = 0; j + 1 < grid.rows; ++j)
       for (std::size_t i = 0; i + 1 < grid.columns; ++i) {
         // Corners counter-clockwise from the lower left; edge k runs from corner k to k + 1.
-        const std::size_t corner[4] = {index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)};
-        const long edge_id[4] = {horizontal(i, j), vertical(i + 1, j), horizontal(i, j + 1), vertical(i, j)};
+        const std::size_t corner[4] = {index(i, j), index(i + 1, j), index(i + 1, j + 1),
+                                       index(i, j + 1)};
+        const long edge_id[4] = {horizontal(i, j), vertical(i + 1, j), horizontal(i, j + 1),
+                                 vertical(i, j)};
         double value[4];
         int mask = 0;
         bool skip = false;
@@ -247,17 +255,20 @@ void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValu
   const auto sx = [&](double x) { return margin + (x - region.x0) * scale; };
   const auto sy = [&](double y) { return margin + (region.y1 - y) * scale; };
   const double total_width = 2 * margin + plot_width + legend_width;
-  const double total_height = std::max(2 * margin + plot_depth, 120 + 22.0 * static_cast<double>(levels.size() + 6));
+  const double total_height =
+      std::max(2 * margin + plot_depth, 120 + 22.0 * static_cast<double>(levels.size() + 6));
   const auto colour_of_band = [&](std::size_t band) {
-    return scale_colour(levels.empty() ? 0.5 : static_cast<double>(band) / static_cast<double>(levels.size()));
+    return scale_colour(
+        levels.empty() ? 0.5 : static_cast<double>(band) / static_cast<double>(levels.size()));
   };
   const auto band_of = [&](double value) {
-    return static_cast<std::size_t>(std::upper_bound(levels.begin(), levels.end(), value) - levels.begin());
+    return static_cast<std::size_t>(std::upper_bound(levels.begin(), levels.end(), value) -
+                                    levels.begin());
   };
 
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(total_width) << "\" height=\""
-      << number(total_height) << "\" viewBox=\"0 0 " << number(total_width) << ' '
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << number(total_width)
+      << "\" height=\"" << number(total_height) << "\" viewBox=\"0 0 " << number(total_width) << ' '
       << number(total_height) << "\" font-family=\"sans-serif\">\n"
       << "<title>isolux plot, work plane z = " << number(grid.height) << " m</title>\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -270,8 +281,8 @@ void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValu
     const std::string fill = value.inside ? "#c8c8c8" : hex(colour_of_band(band_of(value.total)));
     out << "<rect x=\"" << number(sx(p[0] - grid.cell_width / 2)) << "\" y=\""
         << number(sy(p[1] + grid.cell_depth / 2)) << "\" width=\""
-        << number(grid.cell_width * scale + 0.3) << "\" height=\"" << number(grid.cell_depth * scale + 0.3)
-        << "\" fill=\"" << fill << "\"/>\n";
+        << number(grid.cell_width * scale + 0.3) << "\" height=\""
+        << number(grid.cell_depth * scale + 0.3) << "\" fill=\"" << fill << "\"/>\n";
   }
   out << "</g>\n";
 
@@ -303,7 +314,8 @@ void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValu
     if (std::abs(area) > 0) centre = {cx / (3 * area), cy / (3 * area)};
     const std::string base = object.name.substr(0, object.name.find('#'));
     auto [place, inserted] = names.try_emplace(base, centre, std::abs(area));
-    if (!inserted && std::abs(area) > place->second.second) place->second = {centre, std::abs(area)};
+    if (!inserted && std::abs(area) > place->second.second)
+      place->second = {centre, std::abs(area)};
   }
   out << "</g>\n<g id=\"object-names\" font-size=\"10\" fill=\"#303030\" text-anchor=\"middle\">\n";
   std::vector<PlanPoint> name_spots;
@@ -316,7 +328,8 @@ void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValu
     }))
       at[1] += 11;
     name_spots.push_back(at);
-    out << "<text x=\"" << number(at[0]) << "\" y=\"" << number(at[1]) << "\">" << escape(name) << "</text>\n";
+    out << "<text x=\"" << number(at[0]) << "\" y=\"" << number(at[1]) << "\">" << escape(name)
+        << "</text>\n";
   }
   out << "</g>\n";
 
@@ -327,7 +340,8 @@ void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValu
     const std::size_t band = band_of(line.level);
     out << "<polyline stroke=\"" << hex(colour_of_band(band), 0.65) << "\" points=\"";
     for (std::size_t i = 0; i < line.points.size(); ++i)
-      out << (i ? " " : "") << number(sx(line.points[i][0])) << ',' << number(sy(line.points[i][1]));
+      out << (i ? " " : "") << number(sx(line.points[i][0])) << ','
+          << number(sy(line.points[i][1]));
     if (line.closed && !line.points.empty())
       out << ' ' << number(sx(line.points[0][0])) << ',' << number(sy(line.points[0][1]));
     out << "\"/>\n";
@@ -338,7 +352,8 @@ void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValu
   for (const IsoluxLine& line : lines) {
     double length = 0;
     for (std::size_t i = 1; i < line.points.size(); ++i)
-      length += std::hypot(line.points[i][0] - line.points[i - 1][0], line.points[i][1] - line.points[i - 1][1]);
+      length += std::hypot(line.points[i][0] - line.points[i - 1][0],
+                           line.points[i][1] - line.points[i - 1][1]);
     if (length * scale < 60) continue;
     const PlanPoint& at = line.points[line.points.size() / 2];
     const PlanPoint spot{sx(at[0]), sy(at[1])};
@@ -358,8 +373,8 @@ void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValu
     if (const auto* point = std::get_if<PointLight>(&light.source)) {
       const double x = sx(point->position[0]), y = sy(point->position[1]);
       out << "<circle cx=\"" << number(x) << "\" cy=\"" << number(y)
-          << "\" r=\"5\" fill=\"#fff6a0\" stroke=\"black\"/>\n<text x=\"" << number(x + 7) << "\" y=\""
-          << number(y - 6) << "\">" << escape(light.name) << "</text>\n";
+          << "\" r=\"5\" fill=\"#fff6a0\" stroke=\"black\"/>\n<text x=\"" << number(x + 7)
+          << "\" y=\"" << number(y - 6) << "\">" << escape(light.name) << "</text>\n";
     } else if (const auto* tube = std::get_if<LinearLight>(&light.source)) {
       out << "<line x1=\"" << number(sx(tube->start[0])) << "\" y1=\"" << number(sy(tube->start[1]))
           << "\" x2=\"" << number(sx(tube->end[0])) << "\" y2=\"" << number(sy(tube->end[1]))
@@ -380,7 +395,8 @@ void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValu
   out << "<g id=\"legend\" font-size=\"12\">\n<text x=\"" << number(lx) << "\" y=\"" << number(ly)
       << "\" font-weight=\"bold\">Illuminance E (lx)</text>\n<text x=\"" << number(lx) << "\" y=\""
       << number(ly + 16) << "\" font-size=\"10\">work plane z = " << number(grid.height)
-      << " m, cells " << number(grid.cell_width) << " x " << number(grid.cell_depth) << " m</text>\n";
+      << " m, cells " << number(grid.cell_width) << " x " << number(grid.cell_depth)
+      << " m</text>\n";
   ly += 32;
   for (std::size_t band = levels.size() + 1; band-- > 0;) {
     std::string label;
@@ -392,10 +408,11 @@ void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValu
       label = "< " + number(levels.front());
     else
       label = number(levels[band - 1]) + " - " + number(levels[band]);
-    out << "<rect x=\"" << number(lx) << "\" y=\"" << number(ly) << "\" width=\"24\" height=\"16\" fill=\""
-        << hex(colour_of_band(band)) << "\" fill-opacity=\"0.55\" stroke=\"" << hex(colour_of_band(band), 0.65)
-        << "\"/>\n<text x=\"" << number(lx + 32) << "\" y=\"" << number(ly + 12) << "\">" << escape(label)
-        << "</text>\n";
+    out << "<rect x=\"" << number(lx) << "\" y=\"" << number(ly)
+        << "\" width=\"24\" height=\"16\" fill=\"" << hex(colour_of_band(band))
+        << "\" fill-opacity=\"0.55\" stroke=\"" << hex(colour_of_band(band), 0.65)
+        << "\"/>\n<text x=\"" << number(lx + 32) << "\" y=\"" << number(ly + 12) << "\">"
+        << escape(label) << "</text>\n";
     ly += 22;
   }
   out << "<rect x=\"" << number(lx) << "\" y=\"" << number(ly) << "\" width=\"24\" height=\"16\" "
@@ -407,9 +424,10 @@ void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValu
       const double dx = sun->direction[0], dy = sun->direction[1], length = std::hypot(dx, dy);
       if (length == 0) continue;
       const double cx = lx + 30, cy = ly + 20, ux = dx / length * 22, uy = -dy / length * 22;
-      out << "<line x1=\"" << number(cx - ux) << "\" y1=\"" << number(cy - uy) << "\" x2=\"" << number(cx + ux)
-          << "\" y2=\"" << number(cy + uy) << "\" stroke=\"#d08000\" stroke-width=\"2\"/>\n<circle cx=\""
-          << number(cx + ux) << "\" cy=\"" << number(cy + uy) << "\" r=\"3\" fill=\"#d08000\"/>\n<text x=\""
+      out << "<line x1=\"" << number(cx - ux) << "\" y1=\"" << number(cy - uy) << "\" x2=\""
+          << number(cx + ux) << "\" y2=\"" << number(cy + uy)
+          << "\" stroke=\"#d08000\" stroke-width=\"2\"/>\n<circle cx=\"" << number(cx + ux)
+          << "\" cy=\"" << number(cy + uy) << "\" r=\"3\" fill=\"#d08000\"/>\n<text x=\""
           << number(lx + 62) << "\" y=\"" << number(cy + 4) << "\">" << escape(light.name)
           << ": light travels this way</text>\n";
       ly += 48;

@@ -77,24 +77,60 @@ HiddenRegion hidden_region(const ConvexPolyhedron& occluder, const Point3& apex)
 
 std::optional<ExactInterval> hidden_interval(const HiddenRegion& region, const Point3& a,
                                              const Point3& b) {
-  Exact low = 0, high = 1;
-  if (region.everywhere) return ExactInterval{low, high};
+  if (region.everywhere) return ExactInterval{0, 1};
   if (region.volume.planes.empty()) return std::nullopt;
+  // Filter: with interval arithmetic on the planes' approximations, a plane that has the
+  // whole source on its closed positive side certifies a miss (the common case: most
+  // occluders near a source hide none of it), and a plane that has it strictly on its
+  // negative side constrains nothing. Only the remaining planes are clipped exactly.
+  std::vector<const Plane3*> uncertain;
+  {
+    const CGAL::Protect_FPU_rounding<true> upward;
+    const auto& a_approx = a.approx();
+    const auto& b_approx = b.approx();
+    for (const Plane3& plane : region.volume.planes) {
+      const auto& h = plane.approx();
+      const auto at_a = h.a() * a_approx.x() + h.b() * a_approx.y() + h.c() * a_approx.z() + h.d();
+      const auto at_b = h.a() * b_approx.x() + h.b() * b_approx.y() + h.c() * b_approx.z() + h.d();
+      if (at_a.inf() >= 0 && at_b.inf() >= 0) return std::nullopt;
+      if (at_a.sup() < 0 && at_b.sup() < 0) continue;
+      uncertain.push_back(&plane);
+    }
+  }
   // Section 4.2.3 in object space: clip the source against each open half-space of the
   // pyramid from the receiving point through the occluder's contour. Along the source
-  // F(Q(u)) = F(a) + u (F(b) - F(a)).
-  for (const Plane3& plane : region.volume.planes) {
-    const Exact at_a = plane_value(plane, a);
-    if (!clip_below_zero(at_a, plane_value(plane, b) - at_a, low, high)) return std::nullopt;
+  // F(Q(u)) = F(a) + u (F(b) - F(a)). In the exact rationals directly (no lazy nodes).
+  using Rational = Exact::ET;
+  const auto& exact_a = CGAL::exact(a);
+  const auto& exact_b = CGAL::exact(b);
+  Rational low = 0, high = 1;
+  for (const Plane3* plane : uncertain) {
+    const auto& h = CGAL::exact(*plane);
+    const Rational at_a = h.a() * exact_a.x() + h.b() * exact_a.y() + h.c() * exact_a.z() + h.d();
+    const Rational at_b = h.a() * exact_b.x() + h.b() * exact_b.y() + h.c() * exact_b.z() + h.d();
+    const Rational slope = at_b - at_a;
+    const int slope_sign = CGAL::sign(slope);
+    if (slope_sign == 0) {
+      if (CGAL::sign(at_a) >= 0) return std::nullopt;
+      continue;
+    }
+    const Rational crossing = -at_a / slope;
+    if (slope_sign > 0) {
+      if (crossing < high) high = crossing;
+    } else if (crossing > low) {
+      low = crossing;
+    }
+    if (!(low < high)) return std::nullopt;
   }
-  return ExactInterval{low, high};
+  return ExactInterval{Exact(low), Exact(high)};
 }
 
 std::optional<ExactInterval> outer_side_interval_exact(const Point3& point, const Vector3& normal,
                                                        const Point3& a, const Point3& b) {
   // n.(Q(u) - point) > 0  <=>  -n.(a - point) - u n.(b - a) < 0.
   Exact low = 0, high = 1;
-  if (!clip_below_zero(-(normal * (a - point)), -(normal * (b - a)), low, high)) return std::nullopt;
+  if (!clip_below_zero(-(normal * (a - point)), -(normal * (b - a)), low, high))
+    return std::nullopt;
   return ExactInterval{low, high};
 }
 
@@ -122,7 +158,8 @@ bool ray_hidden(const ConvexPolyhedron& occluder, const Point3& point, const Vec
     const Face& face = occluder.faces().front();
     const Exact at_point = plane_value(face.plane, point);
     const Exact slope = face.normal() * toward;
-    if (CGAL::is_zero(slope) || CGAL::sign(at_point) != CGAL::opposite(CGAL::sign(slope))) return false;
+    if (CGAL::is_zero(slope) || CGAL::sign(at_point) != CGAL::opposite(CGAL::sign(slope)))
+      return false;
     return in_relative_interior(face, point + (-at_point / slope) * toward);
   }
   // The open ray point + t toward, t > 0, meets the interior iff some t > 0 has every

@@ -1,6 +1,7 @@
 #include "penumbra/illuminance/scene_illuminance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -70,7 +71,28 @@ bool ray_may_meet(const Box& box, const Vec3d& origin, const Vec3d& direction) {
 struct Occluder {
   const ConvexPolyhedron* solid;
   Box box;
+  std::array<Point3, 8> corners;  // of the box, exact
 };
+
+std::array<Point3, 8> corners_of(const Box& box) {
+  std::array<Point3, 8> corners;
+  for (int k = 0; k < 8; ++k)
+    corners[k] = Point3((k & 1) ? box.high[0] : box.low[0], (k & 2) ? box.high[1] : box.low[1],
+                        (k & 4) ? box.high[2] : box.low[2]);
+  return corners;
+}
+
+// true when the box lies strictly on one side of the plane through p, a, b: then it
+// cannot meet any segment from p to the source a b, which all lie in that plane. False
+// when p, a, b are collinear.
+bool beside_plane(const std::array<Point3, 8>& corners, const Point3& p, const Point3& a,
+                  const Point3& b) {
+  const CGAL::Orientation first = CGAL::orientation(p, a, b, corners[0]);
+  if (first == CGAL::COPLANAR) return false;
+  for (int k = 1; k < 8; ++k)
+    if (CGAL::orientation(p, a, b, corners[k]) != first) return false;
+  return true;
+}
 
 struct CachedPoint {
   Point3 position;
@@ -113,8 +135,10 @@ IlluminanceSolver::IlluminanceSolver(const Scene& scene) {
   auto impl = std::make_shared<Impl>();
   impl->objects = scene.objects;
   impl->lights = scene.lights;
-  for (const Object& object : impl->objects)
-    impl->occluders.push_back({&object.solid, box_of(object.solid.bbox())});
+  for (const Object& object : impl->objects) {
+    const Box box = box_of(object.solid.bbox());
+    impl->occluders.push_back({&object.solid, box, corners_of(box)});
+  }
   for (const Light& light : impl->lights) {
     if (const auto* point = std::get_if<PointLight>(&light.source)) {
       CachedPoint lamp{to_exact(point->position), point, {}};
@@ -175,11 +199,14 @@ std::vector<ExactInterval> IlluminanceSolver::Impl::linear_visible(const CachedL
       outer_side_interval_exact(receiver, to_exact_vector(normal), tube.start, tube.end);
   if (!outer) return {};
   // Section 4.2.3: each occluder near the triangle (P, Q1, Q2) hides an open sub-segment,
-  // the source clipped by the pyramid from P through its contour.
+  // the source clipped by the pyramid from P through its contour. Occluders whose boxes
+  // miss the triangle's box or lie wholly on one side of its plane are skipped first.
   const Box triangle = box_of({&point, &tube.light->start, &tube.light->end});
   std::vector<ExactInterval> hidden;
   for (const Occluder& occluder : occluders) {
-    if (!overlap(occluder.box, triangle)) continue;
+    if (!overlap(occluder.box, triangle) ||
+        beside_plane(occluder.corners, receiver, tube.start, tube.end))
+      continue;
     const HiddenRegion region = hidden_region(*occluder.solid, receiver);
     if (region.empty()) continue;
     const auto blocked = hidden_interval(region, tube.start, tube.end);

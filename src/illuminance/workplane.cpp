@@ -17,7 +17,8 @@ namespace {
 std::size_t cells_across(double length, double spacing) {
   const double quotient = length / spacing;
   const double nearest = std::round(quotient);
-  const double cells = std::abs(quotient - nearest) <= 1e-9 * nearest ? nearest : std::ceil(quotient);
+  const double cells =
+      std::abs(quotient - nearest) <= 1e-9 * nearest ? nearest : std::ceil(quotient);
   return static_cast<std::size_t>(std::max(1.0, cells));
 }
 

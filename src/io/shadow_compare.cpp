@@ -50,7 +50,7 @@ class Comparison {
                       (b ? "true" : "false"));
     }
     if (computed.value("beyond_range", false) || golden.value("beyond_range", false)) return;
-    for (const char* kind : {"shadow", "lit"}) {
+    for (const char* kind : {"shadow", "umbra", "penumbra", "lit"}) {
       const json& a = need(golden, kind, path);
       if (exact_region(a, path + "." + kind) != exact_region(computed.at(kind), kind))
         out.push_back(where + ": " + kind + " differs: golden " + summary(a) + "; computed " +

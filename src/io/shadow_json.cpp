@@ -167,22 +167,44 @@ json shadow_json(const Scene& scene, const ShadowResult& result, const ShadowJso
       const FaceShadow& shadow = shadows.faces[r];
       json item = {{"light", scene.lights[shadows.light].name},
                    {"faces_away", shadow.faces_away},
-                   {"joint_occlusion", false}};
+                   {"joint_occlusion", shadow.joint_occlusion}};
       if (shadow.beyond_range) {
         item["beyond_range"] = true;
         per_light.push_back(std::move(item));
         continue;
       }
       item["shadow"] = region_json(shadow.shadow, face, options.exact);
-      item["umbra"] = item["shadow"];
-      item["penumbra"] = {{"area", 0.0}, {"polygons", json::array()}};
+      if (shadow.linear) {
+        item["source_clipped"] = shadow.source_clipped;
+        item["umbra"] = region_json(shadow.umbra, face, options.exact);
+        item["penumbra"] = region_json(shadow.penumbra, face, options.exact);
+      } else {
+        item["umbra"] = item["shadow"];
+        item["penumbra"] = {{"area", 0.0}, {"polygons", json::array()}};
+      }
       item["lit"] = region_json(shadow.lit, face, options.exact);
       json occluders = json::array();
       for (const OccluderShadow& occluder : shadow.occluders) {
         json o = {{"object", scene.objects[occluder.occluder].name},
                   {"polygon", ring_json(occluder.polygon, face, false)},
                   {"area", world_area(convex_region(occluder.polygon), face)}};
-        if (options.exact) o["exact"] = {{"polygon", ring_json(occluder.polygon, face, true)}};
+        json exact;
+        if (options.exact) exact["polygon"] = ring_json(occluder.polygon, face, true);
+        if (occluder.linear_case) {
+          // Linear sources: the occluder's umbra, its App. A2 case, and the raw loops
+          // of section 4.1.2 (absent in the object-space case).
+          o["case"] = *occluder.linear_case == LinearCase::A ? "A" : "B";
+          o["object_space"] = occluder.object_space;
+          o["umbra"] = occluder.umbra ? ring_json(*occluder.umbra, face, false) : json::array();
+          o["penumbra_loop"] = ring_json(occluder.penumbra_loop, face, false);
+          o["umbra_loop"] = ring_json(occluder.umbra_loop, face, false);
+          if (options.exact) {
+            exact["umbra"] = occluder.umbra ? ring_json(*occluder.umbra, face, true) : json::array();
+            exact["penumbra_loop"] = ring_json(occluder.penumbra_loop, face, true);
+            exact["umbra_loop"] = ring_json(occluder.umbra_loop, face, true);
+          }
+        }
+        if (options.exact) o["exact"] = std::move(exact);
         occluders.push_back(std::move(o));
       }
       item["occluders"] = std::move(occluders);

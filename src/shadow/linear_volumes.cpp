@@ -43,10 +43,21 @@ bool on_contour(const std::vector<int>& contour, int vertex) {
   return std::find(contour.begin(), contour.end(), vertex) != contour.end();
 }
 
-// returns the parameter interval [t0, t1] of the line q1 + t (q2 - q1) inside the
-// closed solid, or nullopt when the line misses it.
+}  // namespace
+
 std::optional<std::pair<Exact, Exact>> line_in_solid(const ConvexPolyhedron& solid,
                                                      const Point3& q1, const Point3& q2) {
+  if (solid.is_flat()) {
+    // A two-sided polygon is not the slab between its two (opposite) planes: the
+    // line meets it at its crossing with the plane, if that lies in the polygon.
+    const Plane3& plane = solid.faces().front().plane;
+    const Exact f1 = plane.a() * q1.x() + plane.b() * q1.y() + plane.c() * q1.z() + plane.d();
+    const Exact f2 = plane.a() * q2.x() + plane.b() * q2.y() + plane.c() * q2.z() + plane.d();
+    if (f1 == f2) return std::nullopt;  // parallel (a line in the plane casts no contour)
+    const Exact t = f1 / (f1 - f2);
+    if (solid.bounded_side(q1 + t * (q2 - q1)) == CGAL::ON_UNBOUNDED_SIDE) return std::nullopt;
+    return std::make_pair(t, t);
+  }
   std::optional<Exact> low, high;
   const Vector3 direction = q2 - q1;
   for (const Face& face : solid.faces()) {
@@ -70,8 +81,6 @@ std::optional<std::pair<Exact, Exact>> line_in_solid(const ConvexPolyhedron& sol
   if (!low || !high || *low > *high) return std::nullopt;
   return std::make_pair(*low, *high);
 }
-
-}  // namespace
 
 bool OpenVolume::contains(const Point3& x) const {
   return std::all_of(planes.begin(), planes.end(), [&](const Plane3& plane) {

@@ -7,6 +7,7 @@
 #include <tbb/parallel_for.h>
 
 #include "penumbra/input_error.h"
+#include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/shadow_polygon.h"
 #include "penumbra/visibility/lighting_sphere.h"
 
@@ -105,6 +106,75 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
   return result;
 }
 
+
+// The same for a linear source (Nishita 1985 section 4.1, docs/linear-shadows.md).
+// No sphere of lighting: a tube has no single point to centre it on.
+LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& receivers,
+                          const std::vector<std::size_t>& rank, std::size_t light_index,
+                          const ShadowOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const Light& light = scene.lights[light_index];
+  const auto& tube = std::get<LinearLight>(light.source);
+  // End points in lexicographic order: the loops (which start at C1) must not
+  // depend on the order the file lists them in.
+  Point3 q1 = to_exact(tube.start), q2 = to_exact(tube.end);
+  if (CGAL::compare_xyz(q2, q1) == CGAL::SMALLER) std::swap(q1, q2);
+
+  LightShadows result;
+  result.light = light_index;
+  result.faces.resize(receivers.size());
+  ShadowStats& stats = result.stats;
+  stats.faces = receivers.size();
+  stats.pairs_possible = receivers.size() * (scene.objects.size() - 1);
+
+  std::vector<const ConvexPolyhedron*> solids;
+  for (const Object& object : scene.objects) solids.push_back(&object.solid);
+  std::vector<std::vector<std::size_t>> candidates;
+  if (options.broad_phase) {
+    candidates = candidate_occluders(solids, receivers, q1, q2);
+  } else {
+    candidates.resize(receivers.size());
+    for (std::size_t r = 0; r < receivers.size(); ++r)
+      for (std::size_t o = 0; o < scene.objects.size(); ++o)
+        if (o != receivers[r].object) candidates[r].push_back(o);
+  }
+  for (auto& list : candidates) {
+    std::sort(list.begin(), list.end(),
+              [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
+    stats.pairs_tested += list.size();
+  }
+
+  auto shade = [&](std::size_t r) {
+    const Object& object = scene.objects[receivers[r].object];
+    const Face& face = object.solid.faces()[receivers[r].face];
+    std::vector<Occluder> occluders;
+    for (std::size_t o : candidates[r]) occluders.push_back({o, &scene.objects[o].solid});
+    try {
+      result.faces[r] = linear_face_shadow(face, q1, q2, std::move(occluders));
+    } catch (const std::domain_error&) {
+      throw InputError(scene.file.string(), light.json_path,
+                       "the linear source '" + light.name + "' touches or passes through an "
+                       "object that shadows face " + std::to_string(receivers[r].face) +
+                       " of '" + object.name + "': not supported (docs/linear-shadows.md)");
+    }
+  };
+  if (options.parallel)
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers.size()),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t r = range.begin(); r != range.end(); ++r) shade(r);
+                      });
+  else
+    for (std::size_t r = 0; r < receivers.size(); ++r) shade(r);
+
+  for (const FaceShadow& face : result.faces) {
+    stats.faces_away += face.faces_away;
+    stats.pairs_shadowing += face.occluders.size();
+  }
+  stats.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
 }  // namespace
 
 ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
@@ -127,27 +197,18 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     if (!light)
       throw InputError(scene.file.string(), "lights",
                        "there is no light named '" + *options.light + "'");
-    if (!position_of(*light))
-      throw InputError(scene.file.string(), light->json_path,
-                       "light '" + light->name +
-                           "' is linear: shadows of linear sources are not computed by this "
-                           "verb yet (issue 4)");
     lights.push_back(static_cast<std::size_t>(light - scene.lights.data()));
   } else {
-    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
-      if (position_of(scene.lights[k]))
-        lights.push_back(k);
-      else
-        result.warnings.push_back("light '" + scene.lights[k].name +
-                                  "' is linear: its shadows are not computed yet (issue 4)");
-    }
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) lights.push_back(k);
   }
   // Lights in name order, for the same reason as objects.
   std::sort(lights.begin(), lights.end(), [&](std::size_t a, std::size_t b) {
     return scene.lights[a].name < scene.lights[b].name;
   });
   for (std::size_t light : lights)
-    result.lights.push_back(shade_scene(scene, result.receivers, rank, light, options));
+    result.lights.push_back(position_of(scene.lights[light])
+                                ? shade_scene(scene, result.receivers, rank, light, options)
+                                : shade_linear(scene, result.receivers, rank, light, options));
   return result;
 }
 

@@ -33,11 +33,11 @@ CGAL::Bbox_3 region_box(const Face& face, const LightPosition& light, const CGAL
   return box;
 }
 
-}  // namespace
-
-std::vector<std::vector<std::size_t>> candidate_occluders(
-    const std::vector<const ConvexPolyhedron*>& objects, const std::vector<Receiver>& receivers,
-    const LightPosition& light) {
+// intersects the receivers' region boxes with the objects' boxes.
+template <typename RegionBox>
+std::vector<std::vector<std::size_t>> intersect_boxes(const std::vector<const ConvexPolyhedron*>& objects,
+                                                      const std::vector<Receiver>& receivers,
+                                                      RegionBox region_box) {
   std::vector<Box> object_boxes;
   CGAL::Bbox_3 scene;
   for (std::size_t k = 0; k < objects.size(); ++k) {
@@ -48,7 +48,7 @@ std::vector<std::vector<std::size_t>> candidate_occluders(
   std::vector<Box> receiver_boxes;
   for (std::size_t r = 0; r < receivers.size(); ++r) {
     const Face& face = objects[receivers[r].object]->faces()[receivers[r].face];
-    receiver_boxes.emplace_back(region_box(face, light, scene), r);
+    receiver_boxes.emplace_back(region_box(face, scene), r);
   }
 
   std::vector<std::vector<std::size_t>> candidates(receivers.size());
@@ -62,6 +62,26 @@ std::vector<std::vector<std::size_t>> candidate_occluders(
     list.erase(std::unique(list.begin(), list.end()), list.end());
   }
   return candidates;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::size_t>> candidate_occluders(
+    const std::vector<const ConvexPolyhedron*>& objects, const std::vector<Receiver>& receivers,
+    const LightPosition& light) {
+  return intersect_boxes(objects, receivers, [&](const Face& face, const CGAL::Bbox_3& scene) {
+    return region_box(face, light, scene);
+  });
+}
+
+std::vector<std::vector<std::size_t>> candidate_occluders(
+    const std::vector<const ConvexPolyhedron*>& objects, const std::vector<Receiver>& receivers,
+    const Point3& q1, const Point3& q2) {
+  return intersect_boxes(objects, receivers, [&](const Face& face, const CGAL::Bbox_3&) {
+    CGAL::Bbox_3 box = q1.bbox() + q2.bbox();
+    for (const Point3& p : face.vertices) box += p.bbox();
+    return box;
+  });
 }
 
 }  // namespace penumbra

@@ -40,4 +40,38 @@ inline double moment_of_legendre_from(double a, int n, int l) {
   return static_cast<double>(sum / std::pow(2.0L, l));
 }
 
+// returns the integral of (a + b g) P_l(cos g) sin g over [from, to], exactly, from the
+// Fourier form P_l(cos g) = 4^-l sum_{k=0}^{l} C(2k, k) C(2l - 2k, l - k) cos((l - 2k) g)
+// (Whittaker-Watson 15.1), cos(n g) sin g = (sin((n + 1) g) - sin((n - 1) g)) / 2 and
+// int (a + b g) sin(m g) dg = -(a + b g) cos(m g) / m + b sin(m g) / m^2.
+inline double linear_times_legendre(int l, double from, double to, double a, double b) {
+  const auto sine_moment = [&](int m) {
+    if (m == 0) return 0.0;
+    const auto antiderivative = [&](double g) {
+      return -(a + b * g) * std::cos(m * g) / m + b * std::sin(m * g) / (double(m) * m);
+    };
+    return antiderivative(to) - antiderivative(from);
+  };
+  long double sum = 0;
+  for (int k = 0; k <= l; ++k) {
+    const int n = l - 2 * k;
+    sum += binomial(2 * k, k) * binomial(2 * l - 2 * k, l - k) *
+           (sine_moment(n + 1) - sine_moment(n - 1)) / 2;
+  }
+  return static_cast<double>(sum / std::pow(4.0L, l));
+}
+
+// returns w_l of eq. (3) for the curve linear in gamma between (nodes[i], candela[i]),
+// exactly, piece by piece with linear_times_legendre.
+template <class Vector>
+double table_weight(int l, const Vector& nodes, const Vector& candela) {
+  double integral = 0;
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+    const double slope = (candela[i + 1] - candela[i]) / (nodes[i + 1] - nodes[i]);
+    integral +=
+        linear_times_legendre(l, nodes[i], nodes[i + 1], candela[i] - slope * nodes[i], slope);
+  }
+  return (2 * l + 1) / 2.0 * integral;
+}
+
 }  // namespace penumbra::test

@@ -53,7 +53,8 @@ inline bool oracle_meets_interior(const ConvexPolyhedron& solid, const Point3& p
 }
 
 // true when the open segment p q meets the solid's interior.
-inline bool oracle_segment_blocked(const ConvexPolyhedron& solid, const Point3& p, const Point3& q) {
+inline bool oracle_segment_blocked(const ConvexPolyhedron& solid, const Point3& p,
+                                   const Point3& q) {
   return oracle_meets_interior(solid, p, q - p, Exact(1));
 }
 

@@ -61,8 +61,9 @@ BOOST_AUTO_TEST_CASE(points_file_gives_e_per_point_and_per_light) {
   write(dir / "pts.csv",
         "label,nz,x,y,z,nx,ny\ncentre,1,2,2,0,0,0\ncorner,1,0,0,0,0,0\nedge,1, 4,2,0,0,0\n"
         "tilted,0.7071,2,2,0,0.7071,0\n");
-  const auto result = run_penumbra("illuminance '" + scene + "' --points '" + (dir / "pts.csv").string() +
-                                   "' -o '" + (dir / "values.csv").string() + "'");
+  const auto result =
+      run_penumbra("illuminance '" + scene + "' --points '" + (dir / "pts.csv").string() +
+                   "' -o '" + (dir / "values.csv").string() + "'");
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
   const auto rows = read_csv(read_text(dir / "values.csv"));
   BOOST_TEST_REQUIRE(rows.size() == 4u);
@@ -73,7 +74,8 @@ BOOST_AUTO_TEST_CASE(points_file_gives_e_per_point_and_per_light) {
   }
   // A normal tilted 45 degrees toward +x under the lamp: cos(alpha) = 1/sqrt(2), I = 1000 cd
   // at r = 3 (the normal is normalised from its four-decimal form).
-  BOOST_TEST(std::stod(rows[3].at("E")) == 1000 / std::sqrt(2.0) / 9, boost::test_tools::tolerance(1e-9));
+  BOOST_TEST(std::stod(rows[3].at("E")) == 1000 / std::sqrt(2.0) / 9,
+             boost::test_tools::tolerance(1e-9));
   BOOST_TEST(rows[0].at("inside").empty());
 }
 
@@ -89,8 +91,9 @@ BOOST_AUTO_TEST_CASE(bad_points_files_exit_2_and_write_nothing) {
   };
   for (const auto& [text, message] : cases) {
     write(dir / "pts.csv", text);
-    const auto result = run_penumbra("illuminance '" + scene + "' --points '" + (dir / "pts.csv").string() +
-                                     "' -o '" + (dir / "out.csv").string() + "'");
+    const auto result =
+        run_penumbra("illuminance '" + scene + "' --points '" + (dir / "pts.csv").string() +
+                     "' -o '" + (dir / "out.csv").string() + "'");
     BOOST_TEST(result.status == 2);
     BOOST_TEST(result.err.find(message) != std::string::npos, result.err);
     BOOST_TEST(result.err.find("pts.csv") != std::string::npos, result.err);
@@ -104,8 +107,9 @@ BOOST_AUTO_TEST_CASE(bad_points_files_exit_2_and_write_nothing) {
 // cell centres, the grid CSV by column name, and an isolux SVG.
 BOOST_AUTO_TEST_CASE(workplane_reports_statistics_and_writes_grid_and_svg) {
   const auto dir = scratch_dir("illuminance-workplane");
-  const auto result = run_penumbra("illuminance '" + scene + "' --workplane 0 --spacing 0.5 --region 0,0,4,4 -o '" +
-                                   (dir / "grid.csv").string() + "' --svg '" + (dir / "iso.svg").string() + "'");
+  const auto result =
+      run_penumbra("illuminance '" + scene + "' --workplane 0 --spacing 0.5 --region 0,0,4,4 -o '" +
+                   (dir / "grid.csv").string() + "' --svg '" + (dir / "iso.svg").string() + "'");
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
   double minimum = 1e300, maximum = 0, sum = 0;
   for (int i = 0; i < 8; ++i)
@@ -130,7 +134,8 @@ BOOST_AUTO_TEST_CASE(workplane_reports_statistics_and_writes_grid_and_svg) {
   BOOST_TEST(number_after("E min ") == minimum, boost::test_tools::tolerance(1e-5));
   BOOST_TEST(number_after("average ") == sum / 64, boost::test_tools::tolerance(1e-5));
   BOOST_TEST(number_after("max ") == maximum, boost::test_tools::tolerance(1e-5));
-  BOOST_TEST(number_after("Emin/Eavg = ") == minimum / (sum / 64), boost::test_tools::tolerance(1e-5));
+  BOOST_TEST(number_after("Emin/Eavg = ") == minimum / (sum / 64),
+             boost::test_tools::tolerance(1e-5));
   const std::string svg = read_text(dir / "iso.svg");
   BOOST_TEST(svg.find("<polyline") != std::string::npos);
   BOOST_TEST(svg.find("floor") != std::string::npos);
@@ -139,9 +144,10 @@ BOOST_AUTO_TEST_CASE(workplane_reports_statistics_and_writes_grid_and_svg) {
 // The default scene: the demo's command works and reports its statistics.
 BOOST_AUTO_TEST_CASE(default_scene_workplane) {
   const auto dir = scratch_dir("illuminance-office");
-  const auto result = run_penumbra("illuminance '" + fixture("scenes/office.json").string() +
-                                   "' --workplane 0.75 --spacing 0.25 -o '" + (dir / "grid.csv").string() +
-                                   "' --svg '" + (dir / "iso.svg").string() + "'");
+  const auto result =
+      run_penumbra("illuminance '" + fixture("scenes/office.json").string() +
+                   "' --workplane 0.75 --spacing 0.25 -o '" + (dir / "grid.csv").string() +
+                   "' --svg '" + (dir / "iso.svg").string() + "'");
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
   BOOST_TEST(result.out.find("uniformity U0") != std::string::npos);
   const auto rows = read_csv(read_text(dir / "grid.csv"));

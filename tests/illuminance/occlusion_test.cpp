@@ -16,7 +16,8 @@ using penumbra::test::oracle_segment_blocked;
 ConvexPolyhedron box(const Vec3d& lo, const Vec3d& hi) {
   std::vector<Point3> corners;
   for (int k = 0; k < 8; ++k)
-    corners.push_back(to_exact({(k & 1) ? hi[0] : lo[0], (k & 2) ? hi[1] : lo[1], (k & 4) ? hi[2] : lo[2]}));
+    corners.push_back(
+        to_exact({(k & 1) ? hi[0] : lo[0], (k & 2) ? hi[1] : lo[1], (k & 4) ? hi[2] : lo[2]}));
   return ConvexPolyhedron::hull(corners);
 }
 
@@ -25,10 +26,13 @@ ConvexPolyhedron box(const Vec3d& lo, const Vec3d& hi) {
 // edges and planes of the solids, where the tie-breaks matter.
 std::vector<ConvexPolyhedron> occluders(std::mt19937& engine) {
   std::uniform_int_distribution<int> eighth(-8, 8);
-  auto point = [&] { return Point3(eighth(engine) / 8.0, eighth(engine) / 8.0, eighth(engine) / 8.0); };
-  std::vector<ConvexPolyhedron> solids{box({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}),
-                                       ConvexPolyhedron::flat_polygon(
-                                           {Point3(-0.5, -0.5, 0), Point3(0.75, -0.5, 0), Point3(0, 0.75, 0)})};
+  auto point = [&] {
+    return Point3(eighth(engine) / 8.0, eighth(engine) / 8.0, eighth(engine) / 8.0);
+  };
+  std::vector<ConvexPolyhedron> solids{
+      box({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}),
+      ConvexPolyhedron::flat_polygon(
+          {Point3(-0.5, -0.5, 0), Point3(0.75, -0.5, 0), Point3(0, 0.75, 0)})};
   for (int k = 0; k < 4; ++k) {
     std::vector<Point3> points;
     for (int i = 0; i < 12; ++i) points.push_back(point());
@@ -47,7 +51,9 @@ BOOST_AUTO_TEST_SUITE(occlusion)
 BOOST_AUTO_TEST_CASE(hidden_region_matches_the_segment_oracle) {
   std::mt19937 engine(20061);  // fixed seed: the same lattice configurations every run
   std::uniform_int_distribution<int> eighth(-12, 12);
-  auto point = [&] { return Point3(eighth(engine) / 8.0, eighth(engine) / 8.0, eighth(engine) / 8.0); };
+  auto point = [&] {
+    return Point3(eighth(engine) / 8.0, eighth(engine) / 8.0, eighth(engine) / 8.0);
+  };
   int hidden = 0, visible = 0, on_boundary_apexes = 0;
   for (const ConvexPolyhedron& solid : occluders(engine)) {
     // Random apexes, then apexes on the boundary: the vertices and the face centroids.
@@ -81,7 +87,9 @@ BOOST_AUTO_TEST_CASE(hidden_region_matches_the_segment_oracle) {
 BOOST_AUTO_TEST_CASE(hidden_interval_is_exact_at_its_ends) {
   std::mt19937 engine(4023);  // fixed seed: reproducible sources
   std::uniform_int_distribution<int> eighth(-16, 16);
-  auto point = [&] { return Point3(eighth(engine) / 8.0, eighth(engine) / 8.0, eighth(engine) / 8.0); };
+  auto point = [&] {
+    return Point3(eighth(engine) / 8.0, eighth(engine) / 8.0, eighth(engine) / 8.0);
+  };
   int intervals = 0;
   for (const ConvexPolyhedron& solid : occluders(engine))
     for (int k = 0; k < 60; ++k) {
@@ -89,7 +97,9 @@ BOOST_AUTO_TEST_CASE(hidden_interval_is_exact_at_its_ends) {
       if (a == b) continue;
       const auto interval = hidden_interval(hidden_region(solid, apex), a, b);
       auto at = [&](const Exact& u) { return a + u * (b - a); };
-      auto blocked = [&](const Exact& u) { return at(u) != apex && oracle_segment_blocked(solid, apex, at(u)); };
+      auto blocked = [&](const Exact& u) {
+        return at(u) != apex && oracle_segment_blocked(solid, apex, at(u));
+      };
       if (!interval) {
         for (int i = 0; i <= 64; ++i) BOOST_TEST(!blocked(Exact(i) / 64));
         continue;
@@ -146,7 +156,8 @@ BOOST_AUTO_TEST_CASE(outer_side_interval_is_exact) {
   BOOST_TEST_REQUIRE(outer.has_value());
   BOOST_TEST((outer->low == Exact(1) / 4 && outer->high == 1));
   // In the plane: nothing (grazing light gives zero).
-  BOOST_TEST(!outer_side_interval_exact(Point3(0, 0, 0), Vector3(0, 0, 1), Point3(1, 0, 0), Point3(2, 0, 0)));
+  BOOST_TEST(!outer_side_interval_exact(Point3(0, 0, 0), Vector3(0, 0, 1), Point3(1, 0, 0),
+                                        Point3(2, 0, 0)));
 }
 
 // Rays toward the sun against the oracle with an unbounded parameter.

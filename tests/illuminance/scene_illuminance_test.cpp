@@ -26,8 +26,9 @@ bool close(double value, double expected, double relative) {
 }
 
 Scene scene_from(const std::string& objects, const std::string& lights) {
-  return parse_scene(R"({"penumbra": 1, "objects": [)" + objects + R"(], "lights": [)" + lights + "]}",
-                     test::fixture("scenes/illuminance-test.json"));
+  return parse_scene(
+      R"({"penumbra": 1, "objects": [)" + objects + R"(], "lights": [)" + lights + "]}",
+      test::fixture("scenes/illuminance-test.json"));
 }
 
 // Reference for a linear source: the midpoint rule over `samples` elements of eq. (5),
@@ -67,12 +68,14 @@ double flux_on_rectangle(const IlluminanceSolver& solver, const Vec3d& origin, c
       for (double ds : {0.5 - g, 0.5 + g})
         for (double dt : {0.5 - g, 0.5 + g}) {
           const double s = (i + ds) / panels_u, t = (j + dt) / panels_v;
-          sum += solver.at({origin[0] + s * u[0] + t * v[0], origin[1] + s * u[1] + t * v[1],
-                            origin[2] + s * u[2] + t * v[2]},
-                           normal)
+          sum += solver
+                     .at({origin[0] + s * u[0] + t * v[0], origin[1] + s * u[1] + t * v[1],
+                          origin[2] + s * u[2] + t * v[2]},
+                         normal)
                      .total;
         }
-  const Vec3d cross{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  const Vec3d cross{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                    u[0] * v[1] - u[1] * v[0]};
   const double area = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
   return sum * area / (4.0 * panels_u * panels_v);
 }
@@ -98,7 +101,8 @@ BOOST_AUTO_TEST_CASE(cie_171_test_5_2_through_the_scene) {
       R"({"name": "formula", "point": [2, 2, 3], "axis": [0, 0, -1],
           "lid": {"cos_power": 1, "spread_deg": 90, "candela": 1000}},
          {"name": "table", "point": [2, 2, 3], "axis": [0, 0, -1],
-          "lid": {"table_deg": [)" + table_deg + R"(], "candela": [)" + candela + R"(], "interpolation": "cosine"}})");
+          "lid": {"table_deg": [)" +
+          table_deg + R"(], "candela": [)" + candela + R"(], "interpolation": "cosine"}})");
   const IlluminanceSolver solver(scene);
   for (int i = 0; i <= 8; ++i)
     for (int j = 0; j <= 8; ++j) {
@@ -125,13 +129,13 @@ BOOST_AUTO_TEST_CASE(cie_171_test_5_2_through_the_scene) {
 // E = 600 / 4 = 150 lx. The point (2, 0, 0) lies on the axis (gamma = 0, 1000 cd) at
 // r^2 = 8, cos(alpha) = 2/sqrt(8).
 BOOST_AUTO_TEST_CASE(tabulated_distribution_between_table_angles) {
-  const Scene scene = scene_from(
-      "", R"({"name": "lamp", "point": [0, 0, 2], "axis": [1, 0, -1],
+  const Scene scene = scene_from("", R"({"name": "lamp", "point": [0, 0, 2], "axis": [1, 0, -1],
               "lid": {"table_deg": [0, 10, 20, 30, 40, 50, 60, 70, 80, 90, 180],
                       "candela":   [1000, 980, 900, 800, 700, 500, 300, 150, 50, 0, 0]}})");
   const IlluminanceSolver solver(scene);
   BOOST_TEST(close(solver.light_at(0, {0, 0, 0}, {0, 0, 1}), 150.0, 1e-12));
-  BOOST_TEST(close(solver.light_at(0, {2, 0, 0}, {0, 0, 1}), 1000 * (2 / std::sqrt(8.0)) / 8, 1e-12));
+  BOOST_TEST(
+      close(solver.light_at(0, {2, 0, 0}, {0, 0, 1}), 1000 * (2 / std::sqrt(8.0)) / 8, 1e-12));
   // A point 17.5 degrees from the nadir toward -x is 45 + 17.5 = 62.5 degrees from the
   // axis: between the 60 and 70 degree entries, I = 300 + 0.25 (150 - 300) = 262.5 cd.
   const double tilt = -17.5 * pi / 180;
@@ -146,9 +150,11 @@ BOOST_AUTO_TEST_CASE(tabulated_distribution_between_table_angles) {
 // horizontal distance d = 1: sin(theta) = d / r, cos(alpha) = z / r, so
 //   E = I d int_0^h z / (d^2 + z^2)^2 dz = (I / 2d) h^2 / (d^2 + h^2) = I * 4 / 10 (h = 2).
 BOOST_AUTO_TEST_CASE(tube_crossing_the_receiving_plane) {
-  const std::string tube = R"({"name": "tube", "linear": [[1, 0, -1], [1, 0, 2]], "candela_per_metre": 150})";
+  const std::string tube =
+      R"({"name": "tube", "linear": [[1, 0, -1], [1, 0, 2]], "candela_per_metre": 150})";
   const Scene bare = scene_from("", tube);
-  const Scene with_floor = scene_from(R"({"name": "floor", "box": {"min": [-3, -3, -0.5], "max": [3, 3, 0]}})", tube);
+  const Scene with_floor =
+      scene_from(R"({"name": "floor", "box": {"min": [-3, -3, -0.5], "max": [3, 3, 0]}})", tube);
   BOOST_TEST(close(illuminance_at(bare, {0, 0, 0}, {0, 0, 1}).total, 150 * 0.4, 1e-12));
   BOOST_TEST(close(illuminance_at(with_floor, {0, 0, 0}, {0, 0, 1}).total, 150 * 0.4, 1e-12));
   // The visible part is exactly u in [1/3, 1].
@@ -158,7 +164,8 @@ BOOST_AUTO_TEST_CASE(tube_crossing_the_receiving_plane) {
   // On the floor's underside (normal -z) only the part below z = -0.5 counts (h = 0.5), and
   // the floor, above that point, hides none of it.
   for (const Scene* scene : {&bare, &with_floor})
-    BOOST_TEST(close(illuminance_at(*scene, {0, 0, -0.5}, {0, 0, -1}).total, 150 / 2.0 * 0.25 / 1.25, 1e-12));
+    BOOST_TEST(close(illuminance_at(*scene, {0, 0, -0.5}, {0, 0, -1}).total,
+                     150 / 2.0 * 0.25 / 1.25, 1e-12));
 }
 
 // Points in the penumbra of a tube behind two occluders (a box and a tilted hull) against
@@ -172,19 +179,22 @@ BOOST_AUTO_TEST_CASE(penumbra_points_match_quadrature_with_exact_visibility) {
   const IlluminanceSolver solver(scene);
   const auto& tube = std::get<LinearLight>(scene.lights[0].source);
   int penumbra_points = 0;
-  for (const Vec3d& p : {Vec3d{1.0, 0, 0}, Vec3d{1.3, 0.1, 0}, Vec3d{0.7, -0.1, 0}, Vec3d{1.6, 0.05, 0},
-                         Vec3d{2.0, 0, 0}, Vec3d{1.9, 0.2, 0.3}, Vec3d{1.15, 0.3, 0}}) {
+  for (const Vec3d& p :
+       {Vec3d{1.0, 0, 0}, Vec3d{1.3, 0.1, 0}, Vec3d{0.7, -0.1, 0}, Vec3d{1.6, 0.05, 0},
+        Vec3d{2.0, 0, 0}, Vec3d{1.9, 0.2, 0.3}, Vec3d{1.15, 0.3, 0}}) {
     const auto parts = solver.visible_parts(0, p, {0, 0, 1});
-    const double full = linear_illuminance(p, {0, 0, 1}, tube.start, tube.end, tube.candela_per_metre);
+    const double full =
+        linear_illuminance(p, {0, 0, 1}, tube.start, tube.end, tube.candela_per_metre);
     const double e = solver.light_at(0, p, {0, 0, 1});
     const bool in_penumbra = e > 0 && e < full * 0.999;
     penumbra_points += in_penumbra;
     const double expected = reference_linear(scene, tube, p, {0, 0, 1}, 20000);
-    BOOST_TEST_MESSAGE("penumbra point " << p[0] << "," << p[1] << "," << p[2] << ": E " << e << ", unshadowed "
-                                         << full << ", reference " << expected << ", " << parts.size()
-                                         << " visible parts");
-    BOOST_TEST(close(e, expected, 5e-3), "at (" << p[0] << ", " << p[1] << ", " << p[2] << "): " << e
-                                                << " vs " << expected << ", " << parts.size() << " parts");
+    BOOST_TEST_MESSAGE("penumbra point " << p[0] << "," << p[1] << "," << p[2] << ": E " << e
+                                         << ", unshadowed " << full << ", reference " << expected
+                                         << ", " << parts.size() << " visible parts");
+    BOOST_TEST(close(e, expected, 5e-3), "at (" << p[0] << ", " << p[1] << ", " << p[2]
+                                                << "): " << e << " vs " << expected << ", "
+                                                << parts.size() << " parts");
   }
   BOOST_TEST(penumbra_points >= 5);
 }
@@ -223,7 +233,9 @@ BOOST_AUTO_TEST_CASE(joint_occlusion_by_two_occluders_gives_zero) {
     single.objects.erase(single.objects.begin() + static_cast<long>(1 - keep));
     const double e = illuminance_at(single, p, {0, 0, 1}).total;
     BOOST_TEST(e > 0);
-    BOOST_TEST(close(e, reference_linear(single, std::get<LinearLight>(scene.lights[0].source), p, {0, 0, 1}, 20000),
+    BOOST_TEST(close(e,
+                     reference_linear(single, std::get<LinearLight>(scene.lights[0].source), p,
+                                      {0, 0, 1}, 20000),
                      5e-3));
   }
 }
@@ -232,9 +244,8 @@ BOOST_AUTO_TEST_CASE(joint_occlusion_by_two_occluders_gives_zero) {
 // exactly when the exact oracle finds the open segment (ray) blocked; points on the shadow
 // boundary (the segment grazes an edge) are lit.
 BOOST_AUTO_TEST_CASE(point_and_sun_shadows_follow_the_exact_oracle) {
-  const Scene scene = scene_from(
-      R"({"name": "cube", "box": {"min": [1, 1, 0], "max": [2, 2, 1]}})",
-      R"({"name": "bulb", "point": [0, 0, 3], "candela": 300},
+  const Scene scene = scene_from(R"({"name": "cube", "box": {"min": [1, 1, 0], "max": [2, 2, 1]}})",
+                                 R"({"name": "bulb", "point": [0, 0, 3], "candela": 300},
          {"name": "sun", "directional": [1, 1, -2], "illuminance": 10000})");
   const IlluminanceSolver solver(scene);
   const ConvexPolyhedron& cube = scene.objects[0].solid;
@@ -244,12 +255,15 @@ BOOST_AUTO_TEST_CASE(point_and_sun_shadows_follow_the_exact_oracle) {
       const Vec3d p{i / 10.0, j / 10.0, 0};
       if (cube.bounded_side(to_exact(p)) != CGAL::ON_UNBOUNDED_SIDE) continue;
       const bool bulb_blocked = oracle_segment_blocked(cube, to_exact(p), Point3(0, 0, 3));
-      const bool sun_blocked = oracle_meets_interior(cube, to_exact(p), Vector3(-1, -1, 2), std::nullopt);
+      const bool sun_blocked =
+          oracle_meets_interior(cube, to_exact(p), Vector3(-1, -1, 2), std::nullopt);
       const double r2 = p[0] * p[0] + p[1] * p[1] + 9;
-      BOOST_TEST(solver.light_at(0, p, {0, 0, 1}) == (bulb_blocked ? 0.0 : 300 * 3 / std::sqrt(r2) / r2),
-                 boost::test_tools::tolerance(1e-12));
-      BOOST_TEST(solver.light_at(1, p, {0, 0, 1}) == (sun_blocked ? 0.0 : 10000 * 2 / std::sqrt(6.0)),
-                 boost::test_tools::tolerance(1e-12));
+      BOOST_TEST(
+          solver.light_at(0, p, {0, 0, 1}) == (bulb_blocked ? 0.0 : 300 * 3 / std::sqrt(r2) / r2),
+          boost::test_tools::tolerance(1e-12));
+      BOOST_TEST(
+          solver.light_at(1, p, {0, 0, 1}) == (sun_blocked ? 0.0 : 10000 * 2 / std::sqrt(6.0)),
+          boost::test_tools::tolerance(1e-12));
       dark_bulb += bulb_blocked;
       dark_sun += sun_blocked;
     }
@@ -301,10 +315,11 @@ BOOST_AUTO_TEST_CASE(flux_is_conserved_in_a_closed_room_with_an_occluder) {
       flux_on_rectangle(solver, {2.8, 1.2, 0.6}, {0, c, 0}, {0, 0, c}, {1, 0, 0}, 30, 30) +
       flux_on_rectangle(solver, {2.2, 1.2, 0.6}, {c, 0, 0}, {0, 0, c}, {0, -1, 0}, 30, 30) +
       flux_on_rectangle(solver, {2.2, 1.8, 0.6}, {c, 0, 0}, {0, 0, c}, {0, 1, 0}, 30, 30);
-  BOOST_TEST_MESSAGE("flux: room " << room << " + cube " << cube << " = " << room + cube << " lm, emitted "
-                                    << emitted << " lm");
+  BOOST_TEST_MESSAGE("flux: room " << room << " + cube " << cube << " = " << room + cube
+                                   << " lm, emitted " << emitted << " lm");
   BOOST_TEST(cube > 0.01 * emitted);  // the cube does intercept a noticeable share
-  BOOST_TEST(close(room + cube, emitted, 1e-3), "room " << room << " + cube " << cube << " vs " << emitted);
+  BOOST_TEST(close(room + cube, emitted, 1e-3),
+             "room " << room << " + cube " << cube << " vs " << emitted);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

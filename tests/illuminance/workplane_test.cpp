@@ -71,7 +71,8 @@ BOOST_AUTO_TEST_CASE(statistics_match_the_formula_and_skip_points_inside_objects
   BOOST_TEST(statistics.minimum == minimum, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(statistics.maximum == maximum, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(statistics.average == sum / counted, boost::test_tools::tolerance(1e-12));
-  BOOST_TEST(statistics.uniformity == minimum / (sum / counted), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(statistics.uniformity == minimum / (sum / counted),
+             boost::test_tools::tolerance(1e-12));
 }
 
 // Isolux lines of the CIE field are circles: rho = sqrt(sqrt(9000 / L) - 9). Every traced
@@ -100,7 +101,8 @@ BOOST_AUTO_TEST_CASE(isolux_lines_of_a_radial_field_are_circles) {
   write_isolux_svg(svg, scene, values, levels);
   const std::string text = svg.str();
   std::size_t polylines = 0;
-  for (std::size_t at = text.find("<polyline"); at != std::string::npos; at = text.find("<polyline", at + 1))
+  for (std::size_t at = text.find("<polyline"); at != std::string::npos;
+       at = text.find("<polyline", at + 1))
     ++polylines;
   BOOST_TEST(polylines == lines.size());
   BOOST_TEST(text.find(">70</text>") != std::string::npos);

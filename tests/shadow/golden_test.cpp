@@ -18,7 +18,9 @@ const char* const goldens[] = {
     "every-kind",         "shadow-cube-point",        "shadow-cube-sun",
     "shadow-touching",    "shadow-cutting",           "shadow-behind-light",
     "shadow-shared-face", "shadow-light-in-plane",    "shadow-sun-parallel",
-    "shadow-abutting",    "shadow-collinear-contour", "shadow-light-inside"};
+    "shadow-abutting",    "shadow-collinear-contour", "shadow-light-inside",
+    "linear-fig5",        "linear-fig6",              "linear-degenerate",
+    "linear-joint",       "office"};
 
 std::string check_command(const std::string& scene, const std::string& golden) {
   return "check '" + scene + "' --golden '" + golden + "'";
@@ -89,9 +91,17 @@ BOOST_AUTO_TEST_CASE(shadows_reports_bad_input_with_status_2_and_writes_nothing)
   BOOST_TEST(run_penumbra("shadows '" + scene + "' --view camera --svg '" +
                           (dir / "a.svg").string() + "' -o '" + out.string() + "'")
                  .status == 2);
-  BOOST_TEST(run_penumbra("shadows " + fixture("scenes/every-kind.json").string() +
-                          " --light tube -o '" + out.string() + "'")
-                 .status == 2);
+  // A tube passing through a box that shadows the floor is refused, naming the light.
+  const auto through = dir / "through.json";
+  std::ofstream(through) << R"({"penumbra": 1, "objects": [
+      {"name": "floor", "box": {"min": [-4, -4, -1], "max": [4, 4, 0]}},
+      {"name": "block", "box": {"min": [0, 0, 1], "max": [1, 1, 2]}}],
+    "lights": [{"name": "tube", "linear": [[-1, 0.5, 1.5], [2, 0.5, 1.5]], "candela_per_metre": 10}]})";
+  const auto refused = run_penumbra("shadows '" + through.string() + "' -o '" + out.string() + "'");
+  BOOST_TEST(refused.status == 2);
+  BOOST_TEST(refused.err.find("lights[0]: the linear source 'tube' touches or passes through") !=
+                 std::string::npos,
+             refused.err);
   BOOST_TEST(!std::filesystem::exists(out));
 }
 

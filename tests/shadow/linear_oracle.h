@@ -52,3 +52,59 @@ inline bool segment_meets_interior(const Point3& x, const Point3& q,
 }
 
 }  // namespace penumbra::test
+
+namespace penumbra::test {
+
+// For a two-sided polygon (no interior) the engine's rule is that a segment is
+// blocked when it crosses the polygon's plane at one point strictly inside the
+// polygon. This returns true when that holds for the segment from x to some source
+// point q1 + t (q2 - q1), t in [0, 1]: each condition is linear in t, so the set of
+// such t is an exact interval.
+inline bool flat_blocks_some(const Point3& x, const Point3& q1, const Point3& q2,
+                             const ConvexPolyhedron& polygon) {
+  Exact low = 0, high = 1;
+  bool low_open = false, high_open = false;
+  // requires f0 + t (f1 - f0) > 0
+  auto positive = [&](const Exact& f0, const Exact& f1) {
+    if (f0 == f1) {
+      if (f0 <= 0) high = -1;  // infeasible
+      return;
+    }
+    const Exact root = f0 / (f0 - f1);
+    if (f1 > f0) {
+      if (root > low || (root == low && !low_open)) low = root, low_open = true;
+    } else {
+      if (root < high || (root == high && !high_open)) high = root, high_open = true;
+    }
+  };
+  const Face& face = polygon.faces().front();
+  const Exact fx = plane_value(face.plane, x);
+  if (fx == 0) return false;
+  // The source point strictly on the other side of the plane.
+  const Exact s = fx > 0 ? Exact(-1) : Exact(1);
+  positive(s * plane_value(face.plane, q1), s * plane_value(face.plane, q2));
+  // The source point strictly inside the pyramid from x through the polygon.
+  const auto& v = face.vertices;
+  const std::size_t n = v.size();
+  const CGAL::Orientation inside = CGAL::orientation(x, v[0], v[1], v[2]);
+  const Exact sign = inside == CGAL::POSITIVE ? Exact(1) : Exact(-1);
+  auto orient = [&](const Point3& a, const Point3& b, const Point3& q) {
+    return CGAL::cross_product(a - x, b - x) * (q - x);
+  };
+  for (std::size_t k = 0; k < n; ++k)
+    positive(sign * orient(v[k], v[(k + 1) % n], q1), sign * orient(v[k], v[(k + 1) % n], q2));
+  return low < high || (low == high && !low_open && !high_open);
+}
+
+// returns true when some segment from x to the source q1q2 is blocked by solid.
+inline bool source_partly_blocked(const Point3& x, const Point3& q1, const Point3& q2,
+                                  const ConvexPolyhedron& solid) {
+  return solid.is_flat() ? flat_blocks_some(x, q1, q2, solid) : triangle_blocked(x, q1, q2, solid);
+}
+
+// returns true when the segment from x to q is blocked by solid.
+inline bool point_blocked(const Point3& x, const Point3& q, const ConvexPolyhedron& solid) {
+  return solid.is_flat() ? flat_blocks_some(x, q, q, solid) : segment_meets_interior(x, q, solid);
+}
+
+}  // namespace penumbra::test

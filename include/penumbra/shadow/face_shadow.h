@@ -6,23 +6,37 @@
 // penumbra is empty (DESIGN.md, "Conventions").
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "penumbra/geometry/convex_polyhedron.h"
+#include "penumbra/shadow/linear_volumes.h"
 #include "penumbra/shadow/region.h"
 
 namespace penumbra {
 
 struct OccluderShadow {
   std::size_t occluder;  // the occluding object's index (in the caller's numbering)
-  Ring2 polygon;         // convex, counter-clockwise, canonical, in the face's frame
+  Ring2 polygon;         // convex, counter-clockwise, canonical, in the face's frame; for a
+                         // linear source the occluder's whole shadow (penumbra and umbra)
+  // Linear sources only (Nishita 1985 section 4.1, docs/linear-shadows.md):
+  std::optional<Ring2> umbra;             // convex, inside polygon
+  std::optional<LinearCase> linear_case;  // App. A2 Case A or B
+  bool object_space = false;              // the contours do not project onto the face: no loops
+  Ring2 penumbra_loop;                    // raw loops, clockwise, as built (section 4.1.2)
+  Ring2 umbra_loop;                       // may cross itself
 };
 
 struct FaceShadow {
   bool faces_away = false;    // the source is not strictly on the face's outer side
   bool beyond_range = false;  // the face lies wholly outside the sphere of lighting: not computed
+  bool linear = false;        // computed for a linear source: umbra and penumbra below apply
+  bool source_clipped = false;   // linear: the face's plane cuts the source (Fig. 7, S3)
+  bool joint_occlusion = false;  // linear: two occluders' penumbrae overlap
   std::vector<OccluderShadow> occluders;  // sorted by occluder
   Region2 shadow;                         // = umbra for point and directional sources
+  Region2 umbra;                          // linear: union of the occluders' umbrae
+  Region2 penumbra;                       // linear: shadow - umbra
   Region2 lit;                            // the face minus shadow
 };
 

@@ -38,6 +38,12 @@ struct LinearVolumes {
   OpenVolume penumbra;        // App. A2 penumbra planes (Case A) or U of the nearer end (Case B)
 };
 
+// returns the parameter interval [t0, t1] of the line q1 + t (q2 - q1) inside the
+// closed solid (for a two-sided polygon, the closed polygon), or nullopt when the
+// line misses it. Precondition: q1 != q2.
+std::optional<std::pair<Exact, Exact>> line_in_solid(const ConvexPolyhedron& solid,
+                                                     const Point3& q1, const Point3& q2);
+
 // returns the shadow volume U_r of solid from the point source q: the planes
 // through q and each contour edge, and the planes of the faces turned toward q
 // (section 4.1.1). Empty planes (no shadow) when no face is turned toward q.

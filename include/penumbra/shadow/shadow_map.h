@@ -1,8 +1,9 @@
 #pragma once
-// Exact shadows of a scene under its point and directional sources (Nishita 1985
-// sections 3.1-3.2): for every light and every face, the shadow and lit polygon
-// sets and each occluder's shadow polygon, after culling with the sphere of
-// lighting and a broad phase. Results are in canonical order (objects by name,
+// Exact shadows of a scene under its point, directional and linear sources (Nishita
+// 1985 sections 3.1-3.2 and 4.1): for every light and every face, the shadow, umbra,
+// penumbra and lit polygon sets and each occluder's shadow polygon (and, for linear
+// sources, its umbra and loops), after culling with the sphere of lighting (point
+// sources) and a broad phase. Results are in canonical order (objects by name,
 // faces by their canonical index), independent of the input order and of threads.
 
 #include <cstddef>
@@ -47,11 +48,12 @@ struct LightShadows {
 struct ShadowResult {
   std::vector<Receiver> receivers;  // object (index into Scene::objects) and face, canonical order
   std::vector<LightShadows> lights;
-  std::vector<std::string> warnings;  // e.g. linear lights, not handled by this computation
+  std::vector<std::string> warnings;  // problems worth reporting that did not stop the work
 };
 
-// computes the shadow maps of every face of scene for its point and directional
-// lights. Throws InputError when options.light names no light or a linear one.
+// computes the shadow maps of every face of scene for its
+// lights. Throws InputError when options.light names no light, or when a linear
+// source touches an object that shadows a face (docs/linear-shadows.md).
 ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options = {});
 
 }  // namespace penumbra

@@ -27,4 +27,10 @@ std::vector<std::vector<std::size_t>> candidate_occluders(
     const std::vector<const ConvexPolyhedron*>& objects, const std::vector<Receiver>& receivers,
     const LightPosition& light);
 
+// returns the candidates for a linear source q1q2: the region swept by the segments
+// from the face to the source is conv(face, q1, q2).
+std::vector<std::vector<std::size_t>> candidate_occluders(
+    const std::vector<const ConvexPolyhedron*>& objects, const std::vector<Receiver>& receivers,
+    const Point3& q1, const Point3& q2);
+
 }  // namespace penumbra
