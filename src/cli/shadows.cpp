@@ -22,6 +22,7 @@ struct ShadowsArguments {
   std::string light;
   std::string svg;
   std::string view = "top";
+  bool loops = false;
   std::string dxf;
   std::string report;
   double range_fraction = 1.0 / 256;
@@ -59,7 +60,7 @@ int run_shadows(const ShadowsArguments& arguments) {
                          [&](std::ostream& out) { out << io::format_json(document); });
   if (!arguments.svg.empty())
     io::write_atomically(arguments.svg, [&](std::ostream& out) {
-      io::write_shadow_svg(out, document, *view, scene.camera);
+      io::write_shadow_svg(out, document, *view, scene.camera, arguments.loops);
     });
   if (!arguments.dxf.empty())
     io::write_atomically(arguments.dxf,
@@ -94,6 +95,8 @@ void register_shadows(CLI::App& app) {
                  "add exact rational coordinates (\"p/q\") under \"exact\" keys");
   verb->add_option("--light", arguments->light, "only the light of this name");
   verb->add_option("--svg", arguments->svg, "SVG drawing of faces and shadows");
+  verb->add_flag("--loops", arguments->loops,
+                 "SVG: draw the raw penumbra and umbra loops of linear sources with arrows");
   verb->add_option("--view", arguments->view,
                    "SVG view: top (plan), camera, or faces (one panel each)")
       ->check(CLI::IsMember({"top", "camera", "faces"}));

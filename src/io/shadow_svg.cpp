@@ -77,8 +77,22 @@ std::optional<std::vector<Flat>> project_ring(const json& ring, const Projection
   return out;
 }
 
+// appends the filled polygons of a region in the given style.
+void add_region(FaceDrawing& drawing, const json& region, const std::string& style,
+                const Projection& project) {
+  for (const auto& polygon : region.at("polygons")) {
+    Shape shape{{}, style};
+    const auto outer = project_ring(polygon.at("outer"), project);
+    if (!outer) continue;
+    shape.rings.push_back(*outer);
+    for (const auto& hole : polygon.at("holes"))
+      if (auto ring = project_ring(hole, project)) shape.rings.push_back(*ring);
+    drawing.shapes.push_back(std::move(shape));
+  }
+}
+
 std::optional<FaceDrawing> draw_face(const json& face, const std::vector<std::string>& lights,
-                                     const Projection& project, double depth) {
+                                     const Projection& project, double depth, bool loops) {
   FaceDrawing drawing{depth, {}};
   const auto outline = project_ring(face.at("boundary"), project);
   if (!outline) return std::nullopt;
@@ -87,17 +101,24 @@ std::optional<FaceDrawing> draw_face(const json& face, const std::vector<std::st
     if (light.value("beyond_range", false)) continue;
     const auto index = std::find(lights.begin(), lights.end(), light.at("light")) - lights.begin();
     const std::string colour = palette[index % 6];
-    for (const auto& polygon : light.at("shadow").at("polygons")) {
-      Shape shape{{},
-                  "fill=\"" + colour + "\" fill-opacity=\"0.45\" fill-rule=\"evenodd\" stroke=\"" +
-                      colour + "\" stroke-width=\"0.5\""};
-      const auto outer = project_ring(polygon.at("outer"), project);
-      if (!outer) continue;
-      shape.rings.push_back(*outer);
-      for (const auto& hole : polygon.at("holes"))
-        if (auto ring = project_ring(hole, project)) shape.rings.push_back(*ring);
-      drawing.shapes.push_back(std::move(shape));
-    }
+    // Two tones: the penumbra light, the umbra dark (for point lights and the sun
+    // the umbra is the whole shadow).
+    const std::string fill = "fill=\"" + colour + "\" fill-rule=\"evenodd\" stroke=\"" + colour +
+                             "\" stroke-width=\"0.5\" fill-opacity=";
+    add_region(drawing, light.at("penumbra"), fill + "\"0.2\"", project);
+    add_region(drawing, light.at("umbra"), fill + "\"0.55\"", project);
+    if (!loops) continue;
+    // The raw loops of a linear source (section 4.1.2), with arrows along their
+    // direction, so that a twisted umbra loop and its clockwise part show.
+    for (const auto& occluder : light.at("occluders"))
+      for (const char* kind : {"penumbra_loop", "umbra_loop"}) {
+        if (!occluder.contains(kind) || occluder.at(kind).empty()) continue;
+        if (const auto ring = project_ring(occluder.at(kind), project))
+          drawing.shapes.push_back(
+              {{*ring}, std::string("fill=\"none\" stroke=\"") +
+                            (kind[0] == 'u' ? "#000" : "#666") +
+                            "\" stroke-width=\"1\" marker-mid=\"url(#arrow)\" marker-end=\"url(#arrow)\""});
+      }
   }
   return drawing;
 }
@@ -144,7 +165,7 @@ std::optional<SvgView> parse_svg_view(const std::string& name) {
 }
 
 void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
-                      const std::optional<Camera>& camera) {
+                      const std::optional<Camera>& camera, bool loops) {
   std::vector<std::string> lights;
   for (const auto& light : document.at("lights")) lights.push_back(light.at("name"));
   const auto& faces = document.at("faces");
@@ -175,7 +196,7 @@ void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
            << "\" font-family=\"sans-serif\" font-size=\"12\">"
            << escape(face.at("object").get<std::string>()) << " face " << face.at("face").get<int>()
            << "</text>\n";
-      if (auto drawing = draw_face(face, lights, project, 0))
+      if (auto drawing = draw_face(face, lights, project, 0, loops))
         emit(body, {*drawing}, x0 + 10, y0 + 24, panel - 20, panel - 34, true);
       body << "</g>\n";
       ++index;
@@ -222,7 +243,7 @@ void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
     }
     for (const auto& face : faces)
       if (const auto depth = depth_of(face))
-        if (auto drawing = draw_face(face, lights, project, *depth))
+        if (auto drawing = draw_face(face, lights, project, *depth, loops))
           drawings.push_back(std::move(*drawing));
     emit(body, std::move(drawings), 20, legend_height, sheet_width - 40,
          sheet_height - legend_height - 20, true);
@@ -233,6 +254,8 @@ void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << sheet_width << "\" height=\""
       << sheet_height << "\" viewBox=\"0 0 " << sheet_width << " " << sheet_height << "\">\n"
       << "<title>penumbra shadows</title>\n"
+      << "<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"5\" refY=\"5\" markerWidth=\"6\" "
+         "markerHeight=\"6\" orient=\"auto\"><path d=\"M0 0 L10 5 L0 10 z\"/></marker></defs>\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   // Legend: one swatch per light, and the face fill.
   out << "<g font-family=\"sans-serif\" font-size=\"13\">\n<text x=\"20\" y=\"20\">shadows ("
@@ -247,8 +270,9 @@ void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
   for (std::size_t k = 0; k < lights.size(); ++k) {
     y += 20;
     out << "<rect x=\"20\" y=\"" << y << "\" width=\"14\" height=\"14\" fill=\"" << palette[k % 6]
-        << "\" fill-opacity=\"0.45\"/><text x=\"40\" y=\"" << y + 12 << "\">shadow of "
-        << escape(lights[k]) << "</text>\n";
+        << "\" fill-opacity=\"0.55\"/><rect x=\"34\" y=\"" << y << "\" width=\"14\" height=\"14\" fill=\""
+        << palette[k % 6] << "\" fill-opacity=\"0.2\"/><text x=\"54\" y=\"" << y + 12
+        << "\">umbra and penumbra of " << escape(lights[k]) << "</text>\n";
   }
   out << "</g>\n" << body.str() << "</svg>\n";
 }

@@ -19,10 +19,12 @@ enum class SvgView { top, camera, faces };
 // parses "top", "camera" or "faces"; nullopt otherwise.
 std::optional<SvgView> parse_svg_view(const std::string& name);
 
-// writes the SVG drawing of document: faces outlined, shadows filled per light, a
-// legend. view camera needs camera (precondition).
+// writes the SVG drawing of document: faces outlined, umbra (dark) and penumbra
+// (light) filled per light, a legend; with loops, the raw penumbra and umbra loops
+// of linear sources as polylines with arrows along their direction. view camera
+// needs camera (precondition).
 void write_shadow_svg(std::ostream& out, const nlohmann::json& document, SvgView view,
-                      const std::optional<Camera>& camera);
+                      const std::optional<Camera>& camera, bool loops = false);
 
 // writes a DXF (R2000) with each face boundary on layer "faces" and every shadow and
 // lit polygon ring as a closed LWPOLYLINE on layer "<light>-shadow" / "<light>-lit",
