@@ -38,8 +38,10 @@ int run_check(const std::string& scene_path, const std::string& golden_path) {
     const auto& culling = golden["culling"];
     if (culling.contains("range_lux")) options.range_lux = culling["range_lux"].get<double>();
     options.range_fraction = culling.value("range_fraction", options.range_fraction);
+    options.full_scale_lux = culling.value("full_scale_lux", options.full_scale_lux);
   }
   json_options.range_fraction = options.range_fraction;
+  json_options.full_scale_lux = options.full_scale_lux;
   json_options.range_lux = options.range_lux;
   std::set<std::string> lights;
   if (golden.contains("lights") && golden["lights"].is_array())

@@ -26,6 +26,7 @@ struct ShadowsArguments {
   std::string dxf;
   std::string report;
   double range_fraction = 1.0 / 256;
+  double full_scale_lux = 500;
   double range_lux = 0;
   bool stats = false;
 };
@@ -42,6 +43,7 @@ int run_shadows(const ShadowsArguments& arguments) {
   ShadowOptions options;
   if (!arguments.light.empty()) options.light = arguments.light;
   options.range_fraction = arguments.range_fraction;
+  options.full_scale_lux = arguments.full_scale_lux;
   if (arguments.range_lux > 0) options.range_lux = arguments.range_lux;
   const ShadowResult result = compute_shadows(scene, options);
   for (const std::string& warning : result.warnings)
@@ -50,6 +52,7 @@ int run_shadows(const ShadowsArguments& arguments) {
   io::ShadowJsonOptions json_options;
   json_options.exact = arguments.exact;
   json_options.range_fraction = options.range_fraction;
+  json_options.full_scale_lux = options.full_scale_lux;
   json_options.range_lux = options.range_lux;
   const nlohmann::json document = shadow_json(scene, result, json_options);
 
@@ -105,9 +108,13 @@ void register_shadows(CLI::App& app) {
   verb->add_option("--report", arguments->report,
                    "CSV: shaded area and percentage per face and light");
   verb->add_option("--range-fraction", arguments->range_fraction,
-                   "sphere of lighting: threshold illuminance as a fraction of I_max / (1 m)^2 "
-                   "(default 1/256; 0: no range culling)")
+                   "sphere of lighting: threshold illuminance as a fraction of the display's "
+                   "full scale (default 1/256; 0: no range culling)")
       ->check(CLI::NonNegativeNumber);
+  verb->add_option("--full-scale-lux", arguments->full_scale_lux,
+                   "sphere of lighting: the display's full scale in lux (default 500, as "
+                   "`penumbra lid info`)")
+      ->check(CLI::PositiveNumber);
   verb->add_option(
           "--range-lux", arguments->range_lux,
           "sphere of lighting: absolute threshold illuminance in lux (overrides the fraction)")

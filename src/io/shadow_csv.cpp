@@ -18,7 +18,7 @@ std::string csv_field(const std::string& text) {
 
 void write_shadow_csv(std::ostream& out, const nlohmann::json& document) {
   out << "object,face,light,face_area,shadow_area,lit_area,shadow_percent,faces_away,"
-         "beyond_range,occluders\n";
+         "beyond_range,occluders,umbra_area,penumbra_area,joint_occlusion\n";
   out << std::setprecision(12);
   for (const auto& face : document.at("faces")) {
     const double area = face.at("area");
@@ -39,7 +39,14 @@ void write_shadow_csv(std::ostream& out, const nlohmann::json& document) {
       if (!beyond)
         for (const auto& occluder : light.at("occluders"))
           names += (names.empty() ? "" : " ") + occluder.at("object").get<std::string>();
-      out << csv_field(names) << "\n";
+      out << csv_field(names) << ",";
+      // Added at the end (columns are found by name): umbra and penumbra areas.
+      if (beyond)
+        out << ",,";
+      else
+        out << light.at("umbra").at("area").get<double>() << ","
+            << light.at("penumbra").at("area").get<double>() << ",";
+      out << (light.value("joint_occlusion", false) ? "true" : "false") << "\n";
     }
   }
 }

@@ -78,8 +78,8 @@ void write_shadow_dxf(std::ostream& out, const nlohmann::json& document) {
   std::set<std::string> layers{"faces"};
   for (const auto& face : document.at("faces"))
     for (const auto& light : face.at("lights")) {
-      layers.insert(light.at("light").get<std::string>() + "-shadow");
-      layers.insert(light.at("light").get<std::string>() + "-lit");
+      for (const char* kind : {"-shadow", "-umbra", "-penumbra", "-lit"})
+        layers.insert(light.at("light").get<std::string>() + kind);
     }
   DxfWriter dxf(out);
   dxf.tag(0, "SECTION");
@@ -118,7 +118,7 @@ void write_shadow_dxf(std::ostream& out, const nlohmann::json& document) {
     for (const auto& light : face.at("lights")) {
       if (light.value("beyond_range", false)) continue;
       const std::string name = light.at("light");
-      for (const char* kind : {"shadow", "lit"})
+      for (const char* kind : {"shadow", "umbra", "penumbra", "lit"})
         for (const auto& polygon : light.at(kind).at("polygons")) {
           dxf.polyline(name + "-" + kind, polygon.at("outer"), normal);
           for (const auto& hole : polygon.at("holes"))

@@ -125,7 +125,8 @@ double world_area(const Region2& region, const Face& face) {
 
 json shadow_json(const Scene& scene, const ShadowResult& result, const ShadowJsonOptions& options) {
   json document = {{"penumbra_shadows", 1}};
-  json culling = {{"range_fraction", options.range_fraction}};
+  json culling = {{"range_fraction", options.range_fraction},
+                  {"full_scale_lux", options.full_scale_lux}};
   if (options.range_lux) culling = {{"range_lux", *options.range_lux}};
   document["culling"] = culling;
 

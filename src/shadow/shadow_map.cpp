@@ -29,7 +29,11 @@ std::optional<LightingSphere> sphere_of(const Light& light, const ShadowOptions&
   if (options.range_lux)
     return LightingSphere::absolute(centre, point->distribution->max_intensity(),
                                     *options.range_lux);
-  if (options.range_fraction > 0) return LightingSphere::relative(centre, options.range_fraction);
+  // The partial sphere of lighting of photometry/figures.h (Nishita section 3.1):
+  // light below range_fraction of the display's full scale is insignificant.
+  if (options.range_fraction > 0)
+    return LightingSphere::absolute(centre, point->distribution->max_intensity(),
+                                    options.range_fraction * options.full_scale_lux);
   return std::nullopt;
 }
 

@@ -4,15 +4,6 @@
 
 namespace penumbra {
 
-LightingSphere LightingSphere::relative(const Point3& centre, double fraction) {
-  CGAL_precondition(fraction > 0);
-  LightingSphere sphere;
-  sphere.centre_ = centre;
-  // I_max / r^2 = fraction * I_max / (1 m)^2, for any I_max > 0.
-  sphere.squared_radius_ = Exact(1) / Exact(fraction);
-  return sphere;
-}
-
 LightingSphere LightingSphere::absolute(const Point3& centre, double max_candela, double lux) {
   CGAL_precondition(lux > 0);
   LightingSphere sphere;

@@ -175,8 +175,8 @@ BOOST_AUTO_TEST_CASE(broad_phase_and_range_culling_drop_no_shadow) {
     all_pairs.broad_phase = false;
     all_pairs.range_fraction = 0;
     const ShadowResult reference = compute_shadows(scene, all_pairs);
-    ShadowOptions culled;  // a sphere of radius 3 m: some faces beyond it
-    culled.range_fraction = 1.0 / 9;
+    ShadowOptions culled;  // a small sphere, r = sqrt(I_max / 50 lx): some faces beyond it
+    culled.range_fraction = 1.0 / 10;
     const ShadowResult result = compute_shadows(scene, culled);
     for (std::size_t l = 0; l < result.lights.size(); ++l) {
       BOOST_TEST(result.lights[l].stats.pairs_tested <= reference.lights[l].stats.pairs_tested);

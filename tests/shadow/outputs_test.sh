@@ -10,12 +10,12 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 python=/usr/bin/python3
 
-for scene in every-kind shadow-cube-point shadow-shared-face; do
+for scene in every-kind shadow-cube-point shadow-shared-face linear-fig5; do
   file="$source_dir/fixtures/scenes/$scene.json"
   for view in top faces camera; do
     if [ "$view" = camera ] && ! grep -q '"camera"' "$file"; then continue; fi
     "$penumbra" shadows "$file" -o "$work/$scene.json" --svg "$work/$scene-$view.svg" --view "$view" \
-      --dxf "$work/$scene.dxf" --report "$work/$scene.csv"
+      --dxf "$work/$scene.dxf" --report "$work/$scene.csv" --loops
     xmllint --noout "$work/$scene-$view.svg"
     grep -q '<path' "$work/$scene-$view.svg"
   done
@@ -38,7 +38,7 @@ for face in loops["faces"]:
     for light in face["lights"]:
         if light.get("beyond_range"):
             continue
-        for kind in ("shadow", "lit"):
+        for kind in ("shadow", "umbra", "penumbra", "lit"):
             for polygon in light[kind]["polygons"]:
                 add(f'{light["light"]}-{kind}', polygon["outer"])
                 for hole in polygon["holes"]:
@@ -68,6 +68,8 @@ for row in rows:
     face, shadow, lit = float(row["face_area"]), float(row["shadow_area"]), float(row["lit_area"])
     assert abs(face - shadow - lit) <= 1e-9 * max(1.0, face), row
     assert abs(float(row["shadow_percent"]) - 100 * shadow / face) <= 1e-9, row
+    umbra, penumbra = float(row["umbra_area"]), float(row["penumbra_area"])
+    assert abs(umbra + penumbra - shadow) <= 1e-9 * max(1.0, face), row
     if row["faces_away"] == "true":
         assert lit == 0, row
 print(f"{sys.argv[1]}: DXF and CSV read back: {sum(len(r) for r in found.values())} polylines, {len(rows)} rows")

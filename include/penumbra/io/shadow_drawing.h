@@ -26,13 +26,15 @@ std::optional<SvgView> parse_svg_view(const std::string& name);
 void write_shadow_svg(std::ostream& out, const nlohmann::json& document, SvgView view,
                       const std::optional<Camera>& camera, bool loops = false);
 
-// writes a DXF (R2000) with each face boundary on layer "faces" and every shadow and
-// lit polygon ring as a closed LWPOLYLINE on layer "<light>-shadow" / "<light>-lit",
+// writes a DXF (R2000) with each face boundary on layer "faces" and every shadow,
+// umbra, penumbra and lit polygon ring as a closed LWPOLYLINE on layer
+// "<light>-shadow" / "-umbra" / "-penumbra" / "-lit",
 // in the face's plane (object coordinate system by the arbitrary axis algorithm).
 void write_shadow_dxf(std::ostream& out, const nlohmann::json& document);
 
 // writes object,face,light,face_area,shadow_area,lit_area,shadow_percent,faces_away,
-// beyond_range,occluders: one row per face and light.
+// beyond_range,occluders,umbra_area,penumbra_area,joint_occlusion: one row per face
+// and light.
 void write_shadow_csv(std::ostream& out, const nlohmann::json& document);
 
 }  // namespace penumbra::io

@@ -16,6 +16,7 @@ namespace penumbra::io {
 struct ShadowJsonOptions {
   bool exact = false;
   double range_fraction = 1.0 / 256;  // recorded so that `check` recomputes alike
+  double full_scale_lux = 500;
   std::optional<double> range_lux;
 };
 

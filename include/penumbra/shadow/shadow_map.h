@@ -19,10 +19,12 @@ namespace penumbra {
 
 struct ShadowOptions {
   std::optional<std::string>
-      light;  // only the light of this name; all point and sun lights otherwise
-  // threshold illuminance of the sphere of lighting as a fraction of I_max / (1 m)^2
-  // (Nishita 1985 section 3.1: 1/256 for an 8-bit display); 0 disables range culling.
+      light;  // only the light of this name; all lights otherwise
+  // threshold illuminance of the sphere of lighting as a fraction of the display's
+  // full scale (Nishita 1985 section 3.1: 1/256 for an 8-bit display), the same
+  // partial sphere `penumbra lid info` reports; 0 disables range culling.
   double range_fraction = 1.0 / 256;
+  double full_scale_lux = 500;      // the display's full scale (photometry/figures.h)
   std::optional<double> range_lux;  // an absolute threshold in lux instead of the fraction
   bool broad_phase = true;          // false: test every (occluder, face) pair
   bool parallel = true;             // TBB across faces

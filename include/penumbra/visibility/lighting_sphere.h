@@ -14,10 +14,6 @@ namespace penumbra {
 
 class LightingSphere {
  public:
-  // builds the sphere around centre for a source of maximum intensity max_candela
-  // with threshold E_t = fraction * max_candela lux (radius 1 / sqrt(fraction) m).
-  // Precondition: fraction > 0.
-  static LightingSphere relative(const Point3& centre, double fraction);
   // builds the sphere with an absolute threshold E_t = lux > 0: radius sqrt(I_max / lux).
   static LightingSphere absolute(const Point3& centre, double max_candela, double lux);
 
