@@ -45,10 +45,17 @@ std::string city(int count) {
     }
   }
   const double centre = 5.0 * side;
+  // Two tubes at 6 m over the gaps between lots (lot boundaries: no building there),
+  // one along x and one along y, 10 m long.
+  const double street = 10.0 * (side / 2);
   text << "], \"lights\": [{\"name\": \"lamp\", \"point\": [" << centre + 0.5 << ", "
        << centre + 0.5
        << ", 6], \"candela\": 2000}, {\"name\": \"sun\", \"directional\": [-0.3, -0.2, -0.93], "
-          "\"illuminance\": 80000}]}";
+          "\"illuminance\": 80000}, {\"name\": \"tube_x\", \"linear\": [["
+       << street - 5 << ", " << street << ", 6], [" << street + 5 << ", " << street
+       << ", 6]], \"candela_per_metre\": 300}, {\"name\": \"tube_y\", \"linear\": [["
+       << street << ", " << street - 5 << ", 6], [" << street << ", " << street + 5
+       << ", 6]], \"candela_per_metre\": 300}]}";
   return text.str();
 }
 
@@ -90,6 +97,12 @@ void BM_ShadowsLamp(benchmark::State& state) {
 void BM_ShadowsSun(benchmark::State& state) {
   shadows_of_city(state, "sun");
 }
+void BM_ShadowsTubeX(benchmark::State& state) {
+  shadows_of_city(state, "tube_x");
+}
+void BM_ShadowsTubeY(benchmark::State& state) {
+  shadows_of_city(state, "tube_y");
+}
 
 }  // namespace
 
@@ -101,6 +114,20 @@ BENCHMARK(BM_ShadowsLamp)
     ->UseRealTime()
     ->Iterations(1);
 BENCHMARK(BM_ShadowsSun)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK(BM_ShadowsTubeX)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK(BM_ShadowsTubeY)
     ->Arg(100)
     ->Arg(1000)
     ->Arg(10000)

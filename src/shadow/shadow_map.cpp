@@ -111,8 +111,8 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
 }
 
 
-// The same for a linear source (Nishita 1985 section 4.1, docs/linear-shadows.md).
-// No sphere of lighting: a tube has no single point to centre it on.
+// The same for a linear source (Nishita 1985 section 4.1, docs/linear-shadows.md),
+// culled by a sphere around the tube's capsule of lighting.
 LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& receivers,
                           const std::vector<std::size_t>& rank, std::size_t light_index,
                           const ShadowOptions& options) {
@@ -131,16 +131,36 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   stats.faces = receivers.size();
   stats.pairs_possible = receivers.size() * (scene.objects.size() - 1);
 
+  std::optional<LightingSphere> sphere;
+  const double threshold = options.range_lux ? *options.range_lux
+                                             : options.range_fraction * options.full_scale_lux;
+  if (threshold > 0)
+    sphere = LightingSphere::around_segment(q1, q2, tube.candela_per_metre, threshold);
+  if (sphere) stats.radius = sphere->radius();
+  std::vector<Receiver> active;
+  std::vector<std::size_t> active_index;
+  for (std::size_t r = 0; r < receivers.size(); ++r) {
+    const Face& face = scene.objects[receivers[r].object].solid.faces()[receivers[r].face];
+    if (sphere && sphere->beyond(face)) {
+      result.faces[r].beyond_range = true;
+      result.faces[r].linear = true;
+      ++stats.beyond_range;
+    } else {
+      active.push_back(receivers[r]);
+      active_index.push_back(r);
+    }
+  }
+
   std::vector<const ConvexPolyhedron*> solids;
   for (const Object& object : scene.objects) solids.push_back(&object.solid);
   std::vector<std::vector<std::size_t>> candidates;
   if (options.broad_phase) {
-    candidates = candidate_occluders(solids, receivers, q1, q2);
+    candidates = candidate_occluders(solids, active, q1, q2);
   } else {
-    candidates.resize(receivers.size());
-    for (std::size_t r = 0; r < receivers.size(); ++r)
+    candidates.resize(active.size());
+    for (std::size_t a = 0; a < active.size(); ++a)
       for (std::size_t o = 0; o < scene.objects.size(); ++o)
-        if (o != receivers[r].object) candidates[r].push_back(o);
+        if (o != active[a].object) candidates[a].push_back(o);
   }
   for (auto& list : candidates) {
     std::sort(list.begin(), list.end(),
@@ -148,27 +168,27 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
     stats.pairs_tested += list.size();
   }
 
-  auto shade = [&](std::size_t r) {
-    const Object& object = scene.objects[receivers[r].object];
-    const Face& face = object.solid.faces()[receivers[r].face];
+  auto shade = [&](std::size_t a) {
+    const Object& object = scene.objects[active[a].object];
+    const Face& face = object.solid.faces()[active[a].face];
     std::vector<Occluder> occluders;
-    for (std::size_t o : candidates[r]) occluders.push_back({o, &scene.objects[o].solid});
+    for (std::size_t o : candidates[a]) occluders.push_back({o, &scene.objects[o].solid});
     try {
-      result.faces[r] = linear_face_shadow(face, q1, q2, std::move(occluders));
+      result.faces[active_index[a]] = linear_face_shadow(face, q1, q2, std::move(occluders));
     } catch (const std::domain_error&) {
       throw InputError(scene.file.string(), light.json_path,
                        "the linear source '" + light.name + "' touches or passes through an "
-                       "object that shadows face " + std::to_string(receivers[r].face) +
+                       "object that shadows face " + std::to_string(active[a].face) +
                        " of '" + object.name + "': not supported (docs/linear-shadows.md)");
     }
   };
   if (options.parallel)
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers.size()),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active.size()),
                       [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t r = range.begin(); r != range.end(); ++r) shade(r);
+                        for (std::size_t a = range.begin(); a != range.end(); ++a) shade(a);
                       });
   else
-    for (std::size_t r = 0; r < receivers.size(); ++r) shade(r);
+    for (std::size_t a = 0; a < active.size(); ++a) shade(a);
 
   for (const FaceShadow& face : result.faces) {
     stats.faces_away += face.faces_away;

@@ -1,6 +1,7 @@
 #include "support/fixtures.h"
 
 #include <sys/wait.h>
+#include <unistd.h>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -33,7 +34,9 @@ std::string read_text(const std::filesystem::path& path) {
 }
 
 std::filesystem::path scratch_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("penumbra-test-" + name);
+  // One directory per process: CTest runs the layers' executables in parallel.
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("penumbra-test-" + std::to_string(getpid()) + "-" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

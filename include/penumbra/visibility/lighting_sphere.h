@@ -17,6 +17,13 @@ class LightingSphere {
   // builds the sphere with an absolute threshold E_t = lux > 0: radius sqrt(I_max / lux).
   static LightingSphere absolute(const Point3& centre, double max_candela, double lux);
 
+  // builds the sphere that holds the capsule of radius sqrt(I L / lux) around a
+  // linear source from a to b of intensity I per metre and length L: no element of
+  // the tube gives more than I L / d^2 at distance d from the segment, so beyond the
+  // capsule its illuminance is below lux. The radius is rounded up (conservative).
+  static LightingSphere around_segment(const Point3& a, const Point3& b, double candela_per_metre,
+                                       double lux);
+
   // the radius in metres (rounded; decisions use the exact squared radius).
   double radius() const;
   // returns true when every point of face is strictly farther than the radius.
