@@ -37,6 +37,39 @@ std::optional<LightingSphere> sphere_of(const Light& light, const ShadowOptions&
   return std::nullopt;
 }
 
+// returns every other object for each receiver (no broad phase).
+std::vector<std::vector<std::size_t>> all_pairs(const Scene& scene,
+                                                const std::vector<Receiver>& receivers) {
+  std::vector<std::vector<std::size_t>> candidates(receivers.size());
+  for (std::size_t a = 0; a < receivers.size(); ++a)
+    for (std::size_t o = 0; o < scene.objects.size(); ++o)
+      if (o != receivers[a].object) candidates[a].push_back(o);
+  return candidates;
+}
+
+// puts each receiver's occluders in canonical order (by object name: rank),
+// whatever the input order, and counts the pairs tested.
+void rank_candidates(std::vector<std::vector<std::size_t>>& candidates,
+                     const std::vector<std::size_t>& rank, ShadowStats& stats) {
+  for (auto& list : candidates) {
+    std::sort(list.begin(), list.end(),
+              [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
+    stats.pairs_tested += list.size();
+  }
+}
+
+// runs shade(a) for every a in [0, count), across threads when parallel.
+template <typename Shade>
+void for_each_receiver(std::size_t count, bool parallel, const Shade& shade) {
+  if (parallel)
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t a = range.begin(); a != range.end(); ++a) shade(a);
+                      });
+  else
+    for (std::size_t a = 0; a < count; ++a) shade(a);
+}
+
 LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receivers,
                          const std::vector<std::size_t>& rank, std::size_t light_index,
                          const ShadowOptions& options) {
@@ -77,17 +110,9 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
     for (const Object& object : scene.objects) solids.push_back(&object.solid);
     candidates = candidate_occluders(solids, active, position);
   } else {
-    candidates.resize(active.size());
-    for (std::size_t a = 0; a < active.size(); ++a)
-      for (std::size_t o = 0; o < scene.objects.size(); ++o)
-        if (o != active[a].object) candidates[a].push_back(o);
+    candidates = all_pairs(scene, active);
   }
-  // Canonical order of occluders: by object name (rank), whatever the input order.
-  for (auto& list : candidates) {
-    std::sort(list.begin(), list.end(),
-              [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
-    stats.pairs_tested += list.size();
-  }
+  rank_candidates(candidates, rank, stats);
 
   auto shade = [&](std::size_t a) {
     const Face& face = scene.objects[active[a].object].solid.faces()[active[a].face];
@@ -97,13 +122,7 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
         shadows.push_back({occluder, std::move(*polygon)});
     result.faces[active_index[a]] = unite_shadows(face, std::move(shadows));
   };
-  if (options.parallel)
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active.size()),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t a = range.begin(); a != range.end(); ++a) shade(a);
-                      });
-  else
-    for (std::size_t a = 0; a < active.size(); ++a) shade(a);
+  for_each_receiver(active.size(), options.parallel, shade);
 
   for (const FaceShadow& face : result.faces) stats.pairs_shadowing += face.occluders.size();
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -157,16 +176,9 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   if (options.broad_phase) {
     candidates = candidate_occluders(solids, active, q1, q2);
   } else {
-    candidates.resize(active.size());
-    for (std::size_t a = 0; a < active.size(); ++a)
-      for (std::size_t o = 0; o < scene.objects.size(); ++o)
-        if (o != active[a].object) candidates[a].push_back(o);
+    candidates = all_pairs(scene, active);
   }
-  for (auto& list : candidates) {
-    std::sort(list.begin(), list.end(),
-              [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
-    stats.pairs_tested += list.size();
-  }
+  rank_candidates(candidates, rank, stats);
 
   auto shade = [&](std::size_t a) {
     const Object& object = scene.objects[active[a].object];
@@ -182,13 +194,7 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
                        " of '" + object.name + "': not supported (docs/linear-shadows.md)");
     }
   };
-  if (options.parallel)
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, active.size()),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t a = range.begin(); a != range.end(); ++a) shade(a);
-                      });
-  else
-    for (std::size_t a = 0; a < active.size(); ++a) shade(a);
+  for_each_receiver(active.size(), options.parallel, shade);
 
   for (const FaceShadow& face : result.faces) {
     stats.faces_away += face.faces_away;

@@ -2,51 +2,12 @@
 
 #include <vector>
 
+#include "half_plane.h"
+
 namespace penumbra {
-namespace {
 
-// An open half-plane A s + B t + C < 0 of a face's frame coordinates (s, t): the
-// section of an open half-space of space by the face's plane.
-struct HalfPlane {
-  Exact a, b, c;
-};
-
-// restricts the open half-space plane(X) < 0 to the face's plane, X = o + s u + t v.
-HalfPlane restrict_to(const Plane3& plane, const FaceFrame& frame) {
-  const Vector3 normal = plane.orthogonal_vector();
-  return {normal * frame.u(), normal * frame.v(),
-          plane.a() * frame.origin().x() + plane.b() * frame.origin().y() +
-              plane.c() * frame.origin().z() + plane.d()};
-}
-
-// clips a convex ring to the closed half-plane (Sutherland-Hodgman, exact). A
-// half-plane parallel to the face (a = b = 0) is constant on it: the open
-// condition c < 0 keeps everything or nothing (the tie-break that makes an
-// occluder lying flat behind the face's plane cast no shadow).
-Ring2 clip(const Ring2& ring, const HalfPlane& half) {
-  if (CGAL::is_zero(half.a) && CGAL::is_zero(half.b))
-    return CGAL::is_negative(half.c) ? ring : Ring2{};
-  Ring2 out;
-  const std::size_t n = ring.size();
-  std::vector<Exact> value(n);
-  std::vector<CGAL::Sign> sign(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    value[k] = half.a * ring[k].x() + half.b * ring[k].y() + half.c;
-    sign[k] = CGAL::sign(value[k]);
-  }
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t next = (k + 1) % n;
-    if (sign[k] != CGAL::POSITIVE) out.push_back(ring[k]);
-    if (sign[k] * sign[next] == CGAL::NEGATIVE) {
-      const Exact t = value[k] / (value[k] - value[next]);
-      out.emplace_back(ring[k].x() + t * (ring[next].x() - ring[k].x()),
-                       ring[k].y() + t * (ring[next].y() - ring[k].y()));
-    }
-  }
-  return out;
-}
-
-}  // namespace
+using detail::HalfPlane;
+using detail::restrict_to;
 
 bool faces_away(const Face& face, const LightPosition& light) {
   return light.side_of(face.plane) != CGAL::POSITIVE;
@@ -93,7 +54,7 @@ std::optional<Ring2> shadow_polygon(const ConvexPolyhedron& occluder, const Face
   Ring2 ring;
   for (const Point3& p : receiver.vertices) ring.push_back(receiver.frame.to_frame(p));
   for (const HalfPlane& half : halves) {
-    ring = clip(ring, half);
+    ring = detail::clip(ring, half);
     if (ring.size() < 3) return std::nullopt;
   }
   Ring2 canonical = canonical_ring(ring);

@@ -4,11 +4,10 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include <CGAL/Polygon_2.h>
-
 #include <random>
 
 #include "linear_oracle.h"
+#include "solids.h"
 #include "penumbra/shadow/face_shadow.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 
@@ -16,35 +15,9 @@ using namespace penumbra;
 
 namespace {
 
-ConvexPolyhedron box(double x0, double y0, double z0, double x1, double y1, double z1) {
-  std::vector<Point3> corners;
-  for (int k = 0; k < 8; ++k)
-    corners.emplace_back((k & 1) ? x1 : x0, (k & 2) ? y1 : y0, (k & 4) ? z1 : z0);
-  return ConvexPolyhedron::hull(corners);
-}
-
-const Face& face_with_plane(const ConvexPolyhedron& solid, const Plane3& plane) {
-  return *std::find_if(solid.faces().begin(), solid.faces().end(),
-                       [&](const Face& f) { return f.plane == plane; });
-}
-
-// returns the exact side of p relative to a region (polygons with holes).
-CGAL::Bounded_side side_of(const Region2& region, const Point2& p) {
-  using Polygon = CGAL::Polygon_2<Kernel>;
-  for (const Polygon2& polygon : region.polygons) {
-    const CGAL::Bounded_side outer =
-        Polygon(polygon.outer.begin(), polygon.outer.end()).bounded_side(p);
-    if (outer == CGAL::ON_UNBOUNDED_SIDE) continue;
-    if (outer == CGAL::ON_BOUNDARY) return CGAL::ON_BOUNDARY;
-    for (const Ring2& hole : polygon.holes) {
-      const CGAL::Bounded_side in_hole = Polygon(hole.begin(), hole.end()).bounded_side(p);
-      if (in_hole == CGAL::ON_BOUNDARY) return CGAL::ON_BOUNDARY;
-      if (in_hole == CGAL::ON_BOUNDED_SIDE) return CGAL::ON_UNBOUNDED_SIDE;
-    }
-    return CGAL::ON_BOUNDED_SIDE;
-  }
-  return CGAL::ON_UNBOUNDED_SIDE;
-}
+using test::box;
+using test::face_with_plane;
+using test::side_of;
 
 // shadow and umbra are the closures of the oracles' open sets: interior points must
 // satisfy the oracle, exterior points must not. Returns 1 for a decisive sample.

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "penumbra/shadow/contour.h"
+#include "solids.h"
 #include "penumbra/shadow/linear_shadow.h"
 #include "penumbra/shadow/shadow_loops.h"
 
@@ -14,12 +15,7 @@ using namespace penumbra;
 
 namespace {
 
-ConvexPolyhedron box(double x0, double y0, double z0, double x1, double y1, double z1) {
-  std::vector<Point3> corners;
-  for (int k = 0; k < 8; ++k)
-    corners.emplace_back((k & 1) ? x1 : x0, (k & 2) ? y1 : y0, (k & 4) ? z1 : z0);
-  return ConvexPolyhedron::hull(corners);
-}
+using test::box;
 
 // The box V = [0,1] x [0,1] x [1,2]; its vertices in canonical (x, y, z) order are
 // 0 (0,0,1), 1 (0,0,2), 2 (0,1,1), 3 (0,1,2), 4 (1,0,1), 5 (1,0,2), 6 (1,1,1), 7 (1,1,2).

@@ -5,11 +5,10 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include <CGAL/Polygon_2.h>
-
 #include <random>
 
 #include "linear_oracle.h"
+#include "solids.h"
 #include "penumbra/scene/load_scene.h"
 #include "penumbra/shadow/face_shadow.h"
 #include "penumbra/shadow/shadow_map.h"
@@ -19,21 +18,7 @@ using namespace penumbra;
 
 namespace {
 
-CGAL::Bounded_side side_of(const Region2& region, const Point2& p) {
-  using Polygon = CGAL::Polygon_2<Kernel>;
-  for (const Polygon2& polygon : region.polygons) {
-    const auto outer = Polygon(polygon.outer.begin(), polygon.outer.end()).bounded_side(p);
-    if (outer == CGAL::ON_UNBOUNDED_SIDE) continue;
-    if (outer == CGAL::ON_BOUNDARY) return CGAL::ON_BOUNDARY;
-    for (const Ring2& hole : polygon.holes) {
-      const auto in_hole = Polygon(hole.begin(), hole.end()).bounded_side(p);
-      if (in_hole != CGAL::ON_UNBOUNDED_SIDE)
-        return in_hole == CGAL::ON_BOUNDARY ? CGAL::ON_BOUNDARY : CGAL::ON_UNBOUNDED_SIDE;
-    }
-    return CGAL::ON_BOUNDED_SIDE;
-  }
-  return CGAL::ON_UNBOUNDED_SIDE;
-}
+using test::side_of;
 
 // returns the visible part of the source for a face, written out independently:
 // the source's points with F > 0, closed at the cut; nullopt when none.
