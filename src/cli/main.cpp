@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
   register_shadows(app);
   register_check(app);
   register_illuminance(app);
-  register_pending(app, "render", "scanline image with isolux colour belts", "#7");
+  register_render(app);
   register_raytrace(app);
   register_lid(app);
   register_pending(app, "radiosity", "interreflected illuminance on patches", "#9");

@@ -18,6 +18,7 @@ void register_info(CLI::App& app);
 void register_shadows(CLI::App& app);
 void register_check(CLI::App& app);
 void register_raytrace(CLI::App& app);
+void register_render(CLI::App& app);
 void register_lid(CLI::App& app);
 void register_illuminance(CLI::App& app);
 

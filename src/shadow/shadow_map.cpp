@@ -114,11 +114,20 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
   }
   rank_candidates(candidates, rank, stats);
 
+  // The shadow volume of each occluder depends only on the light: build it once.
+  std::vector<char> needed(scene.objects.size(), 0);
+  for (const auto& list : candidates)
+    for (std::size_t occluder : list) needed[occluder] = 1;
+  std::vector<std::vector<Plane3>> volumes(scene.objects.size());
+  for_each_receiver(scene.objects.size(), options.parallel, [&](std::size_t o) {
+    if (needed[o]) volumes[o] = shadow_volume(scene.objects[o].solid, position);
+  });
+
   auto shade = [&](std::size_t a) {
     const Face& face = scene.objects[active[a].object].solid.faces()[active[a].face];
     std::vector<OccluderShadow> shadows;
     for (std::size_t occluder : candidates[a])
-      if (auto polygon = shadow_polygon(scene.objects[occluder].solid, face, position))
+      if (auto polygon = shadow_polygon(scene.objects[occluder].solid, volumes[occluder], face))
         shadows.push_back({occluder, std::move(*polygon)});
     result.faces[active_index[a]] = unite_shadows(face, std::move(shadows));
   };

@@ -12,6 +12,7 @@
 // that open set; a shadow without area is no shadow.
 
 #include <optional>
+#include <vector>
 
 #include "penumbra/geometry/convex_polyhedron.h"
 #include "penumbra/shadow/region.h"
@@ -28,5 +29,14 @@ bool faces_away(const Face& face, const LightPosition& light);
 // face away from the light, and must not be a face of occluder.
 std::optional<Ring2> shadow_polygon(const ConvexPolyhedron& occluder, const Face& receiver,
                                     const LightPosition& light);
+
+// returns the planes of occluder's open shadow volume from light (section 3.2): a
+// point X is shadowed when plane(X) < 0 for each. Independent of the receiver, so
+// a scene computes it once per occluder and light.
+std::vector<Plane3> shadow_volume(const ConvexPolyhedron& occluder, const LightPosition& light);
+
+// returns the shadow polygon for a volume from shadow_volume(occluder, light).
+std::optional<Ring2> shadow_polygon(const ConvexPolyhedron& occluder,
+                                    const std::vector<Plane3>& volume, const Face& receiver);
 
 }  // namespace penumbra

@@ -1,0 +1,41 @@
+#pragma once
+// Isolux colour belts over a shaded image (Nishita 1985 section 5): the illuminance
+// levels cut the image into bands; every other band is painted with a colour that varies
+// with the illuminance (blue at 0, red at the image's maximum), and the bands between
+// show the shaded image, so both remain visible. A legend gives the lux of each level in
+// the colour of that level. Drawing only: doubles and 8-bit sRGB.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "penumbra/render/scanline_renderer.h"
+
+namespace penumbra::render {
+
+using Rgb8 = std::array<std::uint8_t, 3>;
+
+// returns the belt colour of illuminance e on a scale whose maximum is maximum: hue from
+// 240 degrees (blue) at 0 to 0 (red) at maximum, full saturation. Precondition: maximum > 0.
+Rgb8 belt_colour(double e, double maximum);
+
+// returns the band of e: the number of levels at or below e (levels increasing). Pixels
+// in odd bands are painted.
+int isolux_band(double e, const std::vector<double>& levels);
+
+// paints the belts of image's illuminance into rgb (3 bytes per pixel, rows from the top,
+// the shaded picture of image). Pixels that see nothing are left alone. Precondition:
+// levels increasing and positive.
+void paint_isolux_belts(std::vector<std::uint8_t>& rgb, const RenderedImage& image,
+                        const std::vector<double>& levels);
+
+// draws the legend in the top-left corner: one line per level, a swatch of its colour
+// and its value in lux, in a 3 x 5 bitmap font scaled by the image size.
+void draw_isolux_legend(std::vector<std::uint8_t>& rgb, int width, int height,
+                        const std::vector<double>& levels, double maximum);
+
+// returns the text of a level as the legend prints it ("%g" with up to 4 digits).
+std::string level_text(double level);
+
+}  // namespace penumbra::render

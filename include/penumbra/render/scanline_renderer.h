@@ -1,0 +1,81 @@
+#pragma once
+// The scanline renderer (Nishita 1985 sections 3.3 and 4.2.2, Appendix A1): visibility
+// by scan lines (scanline_visibility.h), then illuminance along each visible run of a
+// face evaluated exactly (illuminance::IlluminanceSolver) at the run's ends, at the
+// pixels on both sides of every crossing of a shadow boundary with the scan line, and
+// every K pixels, and interpolated linearly in between. The shadow boundaries are the
+// exact shadow and umbra regions of every light on the face (shadow_map.h), carried into
+// the scan plane, so interpolation never bridges the edge of a shadow; that also covers
+// section 4.2.2's object-space case, where the loops do not project onto the face.
+//
+// A diffuse face's luminance is L = rho E / pi (cd/m^2), tinted per channel by its
+// material's colour.
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "penumbra/render/scanline_visibility.h"
+#include "penumbra/scene/scene.h"
+
+namespace penumbra::render {
+
+struct RenderOptions {
+  int interval = 3;      // K: evaluate every K pixels along a run (1: every pixel)
+  bool parallel = true;  // TBB across scan lines
+};
+
+struct RenderedImage {
+  int width = 0;
+  int height = 0;
+  VisibilityMap visibility;
+  std::vector<double> illuminance;  // E, lux, per pixel; 0 where nothing is seen
+  std::vector<double> luminance;    // L = rho E / pi, cd/m^2, per pixel
+  std::vector<Colour> radiance;     // L tinted by the material colour, per channel
+  std::size_t evaluations = 0;      // exact illuminance evaluations
+  std::size_t boundary_crossings = 0;  // shadow boundaries met on scan lines
+
+  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * width + i; }
+};
+
+// Renders one camera's view of a scene, caching what does not depend on the interval:
+// the visibility map, the shadow boundaries of every visible face and the illuminance
+// solver.
+class ScanlineRenderer {
+ public:
+  // computes the visibility of camera's image, the exact shadows of every light on every
+  // face (without range culling) and prepares the illuminance solver. Throws what
+  // compute_shadows throws for a scene it cannot take.
+  ScanlineRenderer(const Scene& scene, const Camera& camera, bool parallel = true);
+  ~ScanlineRenderer();
+
+  // === Methods
+
+  // shades the image: illuminance at span ends, shadow-boundary crossings and every
+  // options.interval pixels, linear in between. Precondition: options.interval >= 1.
+  RenderedImage render(const RenderOptions& options = {}) const;
+
+  const VisibilityMap& visibility() const;
+  const ViewFrame& view() const;
+
+  // returns the point pixel (i, j) sees, lifted by surface_lift off its face so that it
+  // is not inside its own solid after rounding, with the face's unit outward normal;
+  // {} where nothing is seen.
+  std::optional<std::array<Vec3d, 2>> visible_point(int i, int j) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// the distance (m, times 1 + the largest coordinate magnitude) a shading point is lifted
+// off its face along the outward normal.
+constexpr double surface_lift = 1e-9;
+
+// renders camera's image of scene: the one-shot form of ScanlineRenderer.
+RenderedImage render_scanline(const Scene& scene, const Camera& camera,
+                              const RenderOptions& options = {});
+
+}  // namespace penumbra::render

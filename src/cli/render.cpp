@@ -1,0 +1,176 @@
+// penumbra render SCENE -o image.png: the scanline renderer with isolux colour belts
+// (docs/render.md; Nishita 1985 sections 3.3, 4.2.2, 5 and Appendix A1).
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "penumbra/illuminance/isolux.h"
+#include "penumbra/input_error.h"
+#include "penumbra/io/atomic_file.h"
+#include "penumbra/io/png.h"
+#include "penumbra/io/tone_map.h"
+#include "penumbra/render/isolux_belts.h"
+#include "penumbra/render/scanline_renderer.h"
+#include "penumbra/scene/load_scene.h"
+#include "verbs.h"
+
+namespace penumbra::cli {
+namespace {
+
+struct RenderArguments {
+  std::string scene;
+  std::string output;
+  int interval = 3;
+  std::string exposure = "auto";
+  bool isolux = false;
+  std::string levels;
+  std::string values;
+  int width = 0;
+  int height = 0;
+};
+
+// returns the exposure given on the command line, 0 for "auto", or -1 when it is neither.
+double parse_exposure(const std::string& text) {
+  if (text == "auto") return 0;
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return -1;
+  }
+  return used == text.size() && value > 0 ? value : -1;
+}
+
+// returns the levels of --levels, increasing and distinct; each must be a positive number.
+std::vector<double> parse_levels(const std::string& text) {
+  std::vector<double> levels;
+  std::stringstream stream(text);
+  std::string field;
+  while (std::getline(stream, field, ',')) {
+    double value = 0;
+    const char* end = field.data() + field.size();
+    const auto [stop, error] = std::from_chars(field.data(), end, value);
+    if (field.empty() || error != std::errc() || stop != end || !std::isfinite(value) ||
+        value <= 0)
+      throw InputError("", "--levels", "not a positive number: \"" + field + "\"");
+    levels.push_back(value);
+  }
+  std::sort(levels.begin(), levels.end());
+  levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+  return levels;
+}
+
+void write_values(const std::string& path, const Scene& scene,
+                  const render::RenderedImage& image) {
+  io::write_atomically(path, [&](std::ostream& out) {
+    out << "px,py,object,face,E,L\n" << std::setprecision(12);
+    for (int j = 0; j < image.height; ++j)
+      for (int i = 0; i < image.width; ++i) {
+        const std::size_t pixel = image.index(i, j);
+        const long object = image.visibility.objects[pixel];
+        out << i << ',' << j << ',';
+        if (object >= 0)
+          out << scene.objects[static_cast<std::size_t>(object)].name << ','
+              << image.visibility.faces[pixel];
+        else
+          out << ',';
+        out << ',' << image.illuminance[pixel] << ',' << image.luminance[pixel] << '\n';
+      }
+  });
+}
+
+int run_render(const RenderArguments& args) {
+  const double exposure_given = parse_exposure(args.exposure);
+  std::vector<double> levels = parse_levels(args.levels);
+  const Scene scene = load_scene(args.scene);
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "penumbra: warning: " << warning << "\n";
+  if (!scene.camera) throw InputError(args.scene, "camera", "render needs a camera in the scene");
+  Camera camera = *scene.camera;
+  if (args.width > 0) camera.width = args.width;
+  if (args.height > 0) camera.height = args.height;
+
+  const auto start = std::chrono::steady_clock::now();
+  const render::ScanlineRenderer renderer(scene, camera);
+  const auto prepared = std::chrono::steady_clock::now();
+  render::RenderOptions options;
+  options.interval = args.interval;
+  const render::RenderedImage image = renderer.render(options);
+  const auto finished = std::chrono::steady_clock::now();
+
+  const double exposure = exposure_given > 0 ? exposure_given : io::auto_exposure(image.radiance);
+  std::vector<std::uint8_t> rgb = io::to_srgb8(image.radiance, exposure);
+  double maximum = 0, minimum = 0;
+  for (std::size_t pixel = 0; pixel < image.illuminance.size(); ++pixel) {
+    if (image.visibility.objects[pixel] < 0) continue;
+    const double e = image.illuminance[pixel];
+    maximum = std::max(maximum, e);
+    if (e > 0 && (minimum == 0 || e < minimum)) minimum = e;
+  }
+  if (args.isolux) {
+    if (levels.empty()) levels = illuminance::isolux_levels(minimum, maximum);
+    const double top = std::max(maximum, levels.empty() ? 0.0 : levels.back());
+    render::paint_isolux_belts(rgb, image, levels);
+    render::draw_isolux_legend(rgb, image.width, image.height, levels, top);
+  }
+  io::write_png(args.output, image.width, image.height, rgb);
+  if (!args.values.empty()) write_values(args.values, scene, image);
+
+  const auto seconds = [](auto from, auto to) {
+    return std::chrono::duration<double>(to - from).count();
+  };
+  std::cout << "render " << image.width << " x " << image.height << ", interval "
+            << args.interval << "\n"
+            << "spans " << image.visibility.spans << ", pieces " << image.visibility.pieces
+            << ", illuminance evaluations " << image.evaluations << " ("
+            << std::setprecision(3)
+            << static_cast<double>(image.evaluations) / (image.width * image.height)
+            << " per pixel), shadow boundary crossings " << image.boundary_crossings << "\n"
+            << "E " << minimum << " .. " << maximum << " lx on visible faces\n"
+            << "time " << seconds(start, finished) << " s (visibility and shadows "
+            << seconds(start, prepared) << " s, shading " << seconds(prepared, finished)
+            << " s), exposure " << exposure << " per cd/m^2\n";
+  if (args.isolux) {
+    std::cout << "isolux levels";
+    for (double level : levels) std::cout << ' ' << render::level_text(level);
+    std::cout << " lx\n";
+  }
+  std::cout << "image " << args.output << "\n";
+  return 0;
+}
+
+}  // namespace
+
+void register_render(CLI::App& app) {
+  CLI::App* verb = app.add_subcommand("render", "scanline image with isolux colour belts");
+  auto args = std::make_shared<RenderArguments>();
+  verb->add_option("SCENE", args->scene, "scene file (JSON) with a camera")->required();
+  verb->add_option("-o,--output", args->output, "PNG image to write")->required();
+  verb->add_option("--interval", args->interval,
+                   "evaluate illuminance every K pixels along a span (1: every pixel)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  verb->add_option("--exposure", args->exposure, "auto, or the scale from cd/m^2 to white")
+      ->capture_default_str()
+      ->check([](const std::string& text) {
+        return parse_exposure(text) < 0 ? "expected 'auto' or a positive number" : "";
+      });
+  verb->add_flag("--isolux", args->isolux, "superimpose isolux colour belts and a legend");
+  verb->add_option("--levels", args->levels,
+                   "isolux levels in lux, e.g. 100,200,500 (default: chosen)");
+  verb->add_option("--values", args->values, "CSV of px,py,object,face,E,L per pixel");
+  verb->add_option("--width", args->width, "image width in pixels (default: the camera's)")
+      ->check(CLI::Range(1, 16384));
+  verb->add_option("--height", args->height, "image height in pixels (default: the camera's)")
+      ->check(CLI::Range(1, 16384));
+  verb->callback([args] { exit_status() = run_render(*args); });
+}
+
+}  // namespace penumbra::cli

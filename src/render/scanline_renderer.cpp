@@ -1,0 +1,223 @@
+#include "penumbra/render/scanline_renderer.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+
+#include "penumbra/illuminance/scene_illuminance.h"
+#include "penumbra/shadow/shadow_map.h"
+#include "vector3.h"
+
+namespace penumbra::render {
+
+using namespace detail;
+
+namespace {
+
+using Segment = std::array<V3, 2>;
+
+// appends the edges of every ring of region, carried from the face frame to the world.
+void append_boundary(const Region2& region, const FaceFrame& frame, std::vector<Segment>& out) {
+  const auto append_ring = [&](const Ring2& ring) {
+    for (std::size_t k = 0; k < ring.size(); ++k)
+      out.push_back({to_double(frame.to_world(ring[k])),
+                     to_double(frame.to_world(ring[(k + 1) % ring.size()]))});
+  };
+  for (const Polygon2& polygon : region.polygons) {
+    append_ring(polygon.outer);
+    for (const Ring2& hole : polygon.holes) append_ring(hole);
+  }
+}
+
+}  // namespace
+
+struct ScanlineRenderer::Impl {
+  std::vector<Material> materials;
+  std::vector<std::size_t> object_material;  // per object: index into materials
+  ViewFrame view;
+  VisibilityMap visibility;
+  illuminance::IlluminanceSolver solver;
+  std::vector<std::size_t> first_face;           // per object: its first receiver slot
+  std::vector<std::vector<Segment>> boundaries;  // per receiver slot: shadow boundaries
+  std::vector<FacePlane> planes;                 // per receiver slot
+  bool parallel;
+
+  Impl(const Scene& scene_in, const Camera& camera, bool parallel_in)
+      : materials(scene_in.materials),
+        view(camera),
+        visibility(scanline_visibility(scene_in, camera, parallel_in)),
+        solver(scene_in),
+        parallel(parallel_in) {
+    std::size_t slots = 0;
+    for (const Object& object : scene_in.objects) {
+      object_material.push_back(object.material);
+      first_face.push_back(slots);
+      slots += object.solid.faces().size();
+    }
+    boundaries.resize(slots);
+    for (std::size_t object = 0; object < scene_in.objects.size(); ++object)
+      for (const Face& face : scene_in.objects[object].solid.faces())
+        planes.push_back(face_plane(face));
+    if (scene_in.lights.empty()) return;
+    // Nishita 1985 section 4.2.2: the shadow, umbra (and so penumbra) boundaries of each
+    // light on each face. No range culling: a boundary beyond the sphere of lighting
+    // still separates values that must not be interpolated across.
+    ShadowOptions options;
+    options.range_fraction = 0;
+    options.parallel = parallel_in;
+    const ShadowResult shadows = compute_shadows(scene_in, options);
+    for (const LightShadows& light : shadows.lights)
+      for (std::size_t r = 0; r < shadows.receivers.size(); ++r) {
+        const Receiver& receiver = shadows.receivers[r];
+        const FaceShadow& map = light.faces[r];
+        if (map.faces_away || map.beyond_range) continue;
+        const Face& face = scene_in.objects[receiver.object].solid.faces()[receiver.face];
+        std::vector<Segment>& out = boundaries[first_face[receiver.object] + receiver.face];
+        append_boundary(map.shadow, face.frame, out);
+        if (map.linear) append_boundary(map.umbra, face.frame, out);
+      }
+  }
+
+  std::size_t slot(long object, int face) const {
+    return first_face[static_cast<std::size_t>(object)] + static_cast<std::size_t>(face);
+  }
+
+  std::optional<std::array<Vec3d, 2>> point(int i, int j) const {
+    const std::size_t pixel = visibility.index(i, j);
+    const long object = visibility.objects[pixel];
+    if (object < 0) return std::nullopt;
+    const FacePlane& plane = planes[slot(object, visibility.faces[pixel])];
+    const V3 direction = view.direction(i + 0.5, j + 0.5);
+    const double eye_distance = dot(plane.normal, view.eye()) + plane.offset;
+    const double t = -eye_distance / dot(plane.normal, direction);
+    V3 p = view.eye() + t * direction;
+    // onto the plane, then lifted off it along the outward normal
+    const double magnitude = std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+    p = p + (surface_lift * (1 + magnitude) - (dot(plane.normal, p) + plane.offset)) * plane.normal;
+    return std::array<Vec3d, 2>{p, plane.normal};
+  }
+
+  double evaluate(int i, int j) const {
+    const auto at = point(i, j);
+    return solver.at((*at)[0], (*at)[1]).total;
+  }
+
+  // Nishita 1985 section 3.3: shades row j; returns (evaluations, crossings).
+  std::array<std::size_t, 2> shade_row(int j, int interval, RenderedImage& image) const {
+    const int width = visibility.width;
+    const long* objects = &visibility.objects[visibility.index(0, j)];
+    const int* faces = &visibility.faces[visibility.index(0, j)];
+    const V3 row_direction = view.direction(width / 2.0, j + 0.5);
+    const V3 plane_normal = cross(view.right(), row_direction);
+    std::array<std::size_t, 2> counts{0, 0};
+    std::vector<int> samples;
+    std::vector<double> values;
+    for (int first = 0; first < width;) {
+      int last = first;
+      while (last + 1 < width && objects[last + 1] == objects[first] &&
+             faces[last + 1] == faces[first])
+        ++last;
+      if (objects[first] >= 0) {
+        // the run [first, last] of one face: its ends and every K pixels ...
+        samples.clear();
+        for (int i = first; i <= last; i += interval) samples.push_back(i);
+        samples.push_back(last);
+        // ... and both sides of every shadow boundary crossing the scan line (4.2.2)
+        for (const Segment& edge : boundaries[slot(objects[first], faces[first])]) {
+          const double side_a = dot(plane_normal, edge[0] - view.eye());
+          const double side_b = dot(plane_normal, edge[1] - view.eye());
+          if ((side_a > 0 && side_b > 0) || (side_a < 0 && side_b < 0) || side_a == side_b)
+            continue;
+          const V3 crossing = edge[0] + (side_a / (side_a - side_b)) * (edge[1] - edge[0]);
+          const auto projected = view.project(crossing);
+          if (!projected) continue;
+          const double x = (*projected)[0];
+          if (x < first + 0.5 || x > last + 0.5) continue;
+          ++counts[1];
+          const int left = static_cast<int>(std::floor(x - 0.5));
+          if (left >= first) samples.push_back(left);
+          if (left + 1 <= last) samples.push_back(left + 1);
+        }
+        std::sort(samples.begin(), samples.end());
+        samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
+        values.resize(samples.size());
+        for (std::size_t k = 0; k < samples.size(); ++k) values[k] = evaluate(samples[k], j);
+        counts[0] += samples.size();
+        // linear interpolation between consecutive evaluations
+        for (std::size_t k = 0; k + 1 < samples.size(); ++k) {
+          const int a = samples[k], b = samples[k + 1];
+          for (int i = a; i < b; ++i) {
+            const double s = static_cast<double>(i - a) / (b - a);
+            image.illuminance[image.index(i, j)] = (1 - s) * values[k] + s * values[k + 1];
+          }
+        }
+        image.illuminance[image.index(samples.back(), j)] = values.back();
+        const Material& material =
+            materials[object_material[static_cast<std::size_t>(objects[first])]];
+        for (int i = first; i <= last; ++i) {
+          const std::size_t pixel = image.index(i, j);
+          const double luminance = material.reflectance * image.illuminance[pixel] / M_PI;
+          image.luminance[pixel] = luminance;
+          for (int c = 0; c < 3; ++c) image.radiance[pixel][c] = luminance * material.color[c];
+        }
+      }
+      first = last + 1;
+    }
+    return counts;
+  }
+};
+
+ScanlineRenderer::ScanlineRenderer(const Scene& scene, const Camera& camera, bool parallel)
+    : impl_(std::make_unique<Impl>(scene, camera, parallel)) {}
+
+ScanlineRenderer::~ScanlineRenderer() = default;
+
+const VisibilityMap& ScanlineRenderer::visibility() const {
+  return impl_->visibility;
+}
+
+const ViewFrame& ScanlineRenderer::view() const {
+  return impl_->view;
+}
+
+std::optional<std::array<Vec3d, 2>> ScanlineRenderer::visible_point(int i, int j) const {
+  return impl_->point(i, j);
+}
+
+RenderedImage ScanlineRenderer::render(const RenderOptions& options) const {
+  if (options.interval < 1) throw std::invalid_argument("render: interval must be at least 1");
+  RenderedImage image;
+  image.width = impl_->visibility.width;
+  image.height = impl_->visibility.height;
+  image.visibility = impl_->visibility;
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
+  image.illuminance.assign(pixels, 0);
+  image.luminance.assign(pixels, 0);
+  image.radiance.assign(pixels, Colour{0, 0, 0});
+  std::atomic<std::size_t> evaluations{0}, crossings{0};
+  const auto rows = [&](int first, int last) {
+    for (int j = first; j < last; ++j) {
+      const auto counts = impl_->shade_row(j, options.interval, image);
+      evaluations += counts[0];
+      crossings += counts[1];
+    }
+  };
+  if (options.parallel && impl_->parallel)
+    tbb::parallel_for(tbb::blocked_range<int>(0, image.height),
+                      [&](const tbb::blocked_range<int>& range) { rows(range.begin(), range.end()); });
+  else
+    rows(0, image.height);
+  image.evaluations = evaluations;
+  image.boundary_crossings = crossings;
+  return image;
+}
+
+RenderedImage render_scanline(const Scene& scene, const Camera& camera,
+                              const RenderOptions& options) {
+  return ScanlineRenderer(scene, camera, options.parallel).render(options);
+}
+
+}  // namespace penumbra::render

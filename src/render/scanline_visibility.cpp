@@ -1,0 +1,253 @@
+#include "penumbra/render/scanline_visibility.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <stdexcept>
+
+#include "vector3.h"
+
+namespace penumbra::render {
+
+using namespace detail;
+
+ViewFrame::ViewFrame(const Camera& camera)
+    : eye_(camera.eye), width_(camera.width), height_(camera.height) {
+  if (camera.width <= 0 || camera.height <= 0)
+    throw std::invalid_argument("ViewFrame: the image needs a positive size");
+  forward_ = normalized(camera.target - camera.eye);
+  right_ = normalized(cross(forward_, camera.up));
+  up_ = cross(right_, forward_);
+  half_height_ = std::tan(camera.fov_deg * (M_PI / 180) / 2);
+  half_width_ = half_height_ * width_ / height_;
+}
+
+Vec3d ViewFrame::direction(double x, double y) const {
+  const double across = (2 * x / width_ - 1) * half_width_;
+  const double down = (1 - 2 * y / height_) * half_height_;
+  return forward_ + across * right_ + down * up_;
+}
+
+std::optional<std::array<double, 3>> ViewFrame::project(const Vec3d& p) const {
+  const V3 offset = p - eye_;
+  const double depth = dot(offset, forward_);
+  if (depth <= 0) return std::nullopt;
+  const double x = (dot(offset, right_) / depth / half_width_ + 1) * width_ / 2;
+  const double y = (1 - dot(offset, up_) / depth / half_height_) * height_ / 2;
+  return std::array<double, 3>{x, y, depth};
+}
+
+FacePlane face_plane(const Face& face) {
+  const V3 normal = to_double(face.normal());
+  const double length = std::sqrt(dot(normal, normal));
+  return {(1 / length) * normal, CGAL::to_double(face.plane.d()) / length};
+}
+
+namespace {
+
+// A front face in doubles (Appendix A1 step (i)).
+struct FrontFace {
+  long object;
+  int face;
+  std::vector<V3> vertices;
+  FacePlane plane;
+  double eye_distance;  // F(S, eye) > 0
+};
+
+// One face's span on a scan line with its inverse depth 1/t = alpha + beta x, which is
+// linear in the image x for a plane (the ray's forward component is 1).
+struct Span {
+  std::size_t face;  // index into the front faces
+  double left, right;
+  double alpha, beta;
+  double inverse_depth(double x) const { return alpha + beta * x; }
+};
+
+// The depth below which a point counts as behind the eye: the scan segment is clipped
+// there, so faces passing beside the eye keep a finite projection.
+constexpr double near_depth = 1e-6;
+
+std::vector<FrontFace> front_faces(const Scene& scene, const V3& eye) {
+  std::vector<FrontFace> result;
+  for (std::size_t object = 0; object < scene.objects.size(); ++object) {
+    const auto& faces = scene.objects[object].solid.faces();
+    for (std::size_t face = 0; face < faces.size(); ++face) {
+      FrontFace front{static_cast<long>(object), static_cast<int>(face), {}, face_plane(faces[face]),
+                      0};
+      front.eye_distance = dot(front.plane.normal, eye) + front.plane.offset;
+      if (!(front.eye_distance > 0)) continue;
+      for (const Point3& vertex : faces[face].vertices) front.vertices.push_back(to_double(vertex));
+      result.push_back(std::move(front));
+    }
+  }
+  return result;
+}
+
+// cuts a front face with the scan plane through eye with normal `plane_normal` and
+// returns its span in image x, or {} when the face misses the scan line or lies behind.
+std::optional<Span> face_span(const FrontFace& face, std::size_t index, const ViewFrame& view,
+                              const V3& plane_normal, const V3& row_direction) {
+  // the face polygon is convex, so the scan plane cuts it in one segment [A, B].
+  std::vector<V3> cut;
+  const std::size_t n = face.vertices.size();
+  std::vector<double> side(n);
+  for (std::size_t k = 0; k < n; ++k) side[k] = dot(plane_normal, face.vertices[k] - view.eye());
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t next = (k + 1) % n;
+    if (side[k] == 0) cut.push_back(face.vertices[k]);
+    if ((side[k] < 0 && side[next] > 0) || (side[k] > 0 && side[next] < 0)) {
+      const double s = side[k] / (side[k] - side[next]);
+      cut.push_back(face.vertices[k] + s * (face.vertices[next] - face.vertices[k]));
+    }
+  }
+  if (cut.size() < 2) return std::nullopt;
+  // the extreme cut points along right; with side == 0 vertices there may be more than two.
+  V3 a = cut[0], b = cut[0];
+  const auto lateral = [&](const V3& p) { return dot(p - view.eye(), view.right()); };
+  const auto depth = [&](const V3& p) { return dot(p - view.eye(), view.forward()); };
+  // order by the angle seen from the eye within the scan plane: lateral / depth is not
+  // defined behind the eye, so order along the segment's own direction instead.
+  for (const V3& p : cut) {
+    if (dot(p - a, p - a) > 0 && dot(b - a, b - a) == 0) b = p;
+  }
+  if (dot(b - a, b - a) == 0) return std::nullopt;
+  for (const V3& p : cut) {
+    // extend [a, b] to cover every cut point on the line a-b.
+    const double s = dot(p - a, b - a) / dot(b - a, b - a);
+    if (s < 0) a = p;
+    if (s > 1) b = p;
+  }
+  double depth_a = depth(a), depth_b = depth(b);
+  if (depth_a < near_depth && depth_b < near_depth) return std::nullopt;
+  if (depth_a < near_depth) {
+    a = a + ((near_depth - depth_a) / (depth_b - depth_a)) * (b - a);
+    depth_a = near_depth;
+  } else if (depth_b < near_depth) {
+    b = b + ((near_depth - depth_b) / (depth_a - depth_b)) * (a - b);
+    depth_b = near_depth;
+  }
+  const double width = view.width();
+  const double half_width = view.half_width();
+  const auto image_x = [&](const V3& p, double d) {
+    return (lateral(p) / d / half_width + 1) * width / 2;
+  };
+  const double xa = image_x(a, depth_a), xb = image_x(b, depth_b);
+  Span span{index, std::min(xa, xb), std::max(xa, xb), 0, 0};
+  // 1/t = -(n . d(x)) / F(S, eye), with d(x) = row_direction + a(x) right and
+  // a(x) = (2x / width - 1) half_width.
+  const double n_row = dot(face.plane.normal, row_direction);
+  const double n_right = dot(face.plane.normal, view.right());
+  span.alpha = -(n_row - half_width * n_right) / face.eye_distance;
+  span.beta = -(2 * half_width / width * n_right) / face.eye_distance;
+  return span;
+}
+
+// resolves one scan line (Appendix A1 step (iii)): writes the visible face of every pixel
+// of row j; returns the number of pieces decided.
+std::size_t resolve_row(const std::vector<Span>& spans, const std::vector<FrontFace>& faces,
+                        int width, long* objects, int* face_ids) {
+  std::vector<double> ends;
+  ends.reserve(2 * spans.size() + 2);
+  ends.push_back(0);
+  ends.push_back(width);
+  for (const Span& span : spans) {
+    if (span.left > 0 && span.left < width) ends.push_back(span.left);
+    if (span.right > 0 && span.right < width) ends.push_back(span.right);
+  }
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  std::size_t pieces = 0;
+  std::vector<const Span*> active;
+  const auto fill = [&](double from, double to, const Span* span) {
+    // pixel centres i + 0.5 in [from, to)
+    const int first = std::max(0, static_cast<int>(std::ceil(from - 0.5)));
+    const int last = std::min(width, static_cast<int>(std::ceil(to - 0.5)));
+    for (int i = first; i < last; ++i) {
+      objects[i] = faces[span->face].object;
+      face_ids[i] = faces[span->face].face;
+    }
+  };
+  for (std::size_t k = 0; k + 1 < ends.size(); ++k) {
+    const double from = ends[k], to = ends[k + 1];
+    if (std::ceil(from - 0.5) >= std::ceil(to - 0.5)) continue;  // no pixel centre inside
+    const double middle = (from + to) / 2;
+    active.clear();
+    for (const Span& span : spans)
+      if (span.left < middle && middle < span.right) active.push_back(&span);
+    if (active.empty()) continue;
+    ++pieces;
+    // the nearest face at the piece's left end (largest 1/t; ties go to the one nearer at
+    // the right end), then wherever another face overtakes it, split the piece there.
+    double at = from;
+    const Span* nearest = nullptr;
+    for (const Span* span : active) {
+      if (!nearest) {
+        nearest = span;
+        continue;
+      }
+      const double here = span->inverse_depth(at), best = nearest->inverse_depth(at);
+      if (here > best || (here == best && span->beta > nearest->beta)) nearest = span;
+    }
+    while (true) {
+      double next = to;
+      const Span* successor = nullptr;
+      for (const Span* span : active) {
+        if (span == nearest || !(span->beta > nearest->beta)) continue;
+        // where span's inverse depth reaches nearest's
+        const double cross_x = (nearest->alpha - span->alpha) / (span->beta - nearest->beta);
+        if (cross_x > at && cross_x < next) {
+          next = cross_x;
+          successor = span;
+        }
+      }
+      fill(at, next, nearest);
+      if (!successor) break;
+      at = next;
+      nearest = successor;
+    }
+  }
+  return pieces;
+}
+
+}  // namespace
+
+VisibilityMap scanline_visibility(const Scene& scene, const Camera& camera, bool parallel) {
+  const ViewFrame view(camera);
+  VisibilityMap map;
+  map.width = camera.width;
+  map.height = camera.height;
+  const std::size_t pixels = static_cast<std::size_t>(map.width) * map.height;
+  map.objects.assign(pixels, -1);
+  map.faces.assign(pixels, -1);
+  const std::vector<FrontFace> faces = front_faces(scene, view.eye());
+  std::atomic<std::size_t> span_count{0}, piece_count{0};
+
+  const auto run_rows = [&](int first, int last) {
+    std::vector<Span> spans;
+    for (int j = first; j < last; ++j) {
+      // the scan plane of row j: through the eye and the pixel centres of the row.
+      const V3 row_direction = view.direction(map.width / 2.0, j + 0.5);
+      const V3 plane_normal = cross(view.right(), row_direction);
+      spans.clear();
+      for (std::size_t k = 0; k < faces.size(); ++k)
+        if (auto span = face_span(faces[k], k, view, plane_normal, row_direction))
+          spans.push_back(*span);
+      span_count += spans.size();
+      piece_count += resolve_row(spans, faces, map.width, &map.objects[map.index(0, j)],
+                                 &map.faces[map.index(0, j)]);
+    }
+  };
+  if (parallel) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, map.height),
+                      [&](const tbb::blocked_range<int>& rows) { run_rows(rows.begin(), rows.end()); });
+  } else {
+    run_rows(0, map.height);
+  }
+  map.spans = span_count;
+  map.pieces = piece_count;
+  return map;
+}
+
+}  // namespace penumbra::render
