@@ -200,7 +200,8 @@ json shadow_json(const Scene& scene, const ShadowResult& result, const ShadowJso
           o["penumbra_loop"] = ring_json(occluder.penumbra_loop, face, false);
           o["umbra_loop"] = ring_json(occluder.umbra_loop, face, false);
           if (options.exact) {
-            exact["umbra"] = occluder.umbra ? ring_json(*occluder.umbra, face, true) : json::array();
+            exact["umbra"] =
+                occluder.umbra ? ring_json(*occluder.umbra, face, true) : json::array();
             exact["penumbra_loop"] = ring_json(occluder.penumbra_loop, face, true);
             exact["umbra_loop"] = ring_json(occluder.umbra_loop, face, true);
           }

@@ -115,9 +115,9 @@ std::optional<FaceDrawing> draw_face(const json& face, const std::vector<std::st
         if (!occluder.contains(kind) || occluder.at(kind).empty()) continue;
         if (const auto ring = project_ring(occluder.at(kind), project))
           drawing.shapes.push_back(
-              {{*ring}, std::string("fill=\"none\" stroke=\"") +
-                            (kind[0] == 'u' ? "#000" : "#666") +
-                            "\" stroke-width=\"1\" marker-mid=\"url(#arrow)\" marker-end=\"url(#arrow)\""});
+              {{*ring},
+               std::string("fill=\"none\" stroke=\"") + (kind[0] == 'u' ? "#000" : "#666") +
+                   "\" stroke-width=\"1\" marker-mid=\"url(#arrow)\" marker-end=\"url(#arrow)\""});
       }
   }
   return drawing;
@@ -270,9 +270,10 @@ void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
   for (std::size_t k = 0; k < lights.size(); ++k) {
     y += 20;
     out << "<rect x=\"20\" y=\"" << y << "\" width=\"14\" height=\"14\" fill=\"" << palette[k % 6]
-        << "\" fill-opacity=\"0.55\"/><rect x=\"34\" y=\"" << y << "\" width=\"14\" height=\"14\" fill=\""
-        << palette[k % 6] << "\" fill-opacity=\"0.2\"/><text x=\"54\" y=\"" << y + 12
-        << "\">umbra and penumbra of " << escape(lights[k]) << "</text>\n";
+        << "\" fill-opacity=\"0.55\"/><rect x=\"34\" y=\"" << y
+        << "\" width=\"14\" height=\"14\" fill=\"" << palette[k % 6]
+        << "\" fill-opacity=\"0.2\"/><text x=\"54\" y=\"" << y + 12 << "\">umbra and penumbra of "
+        << escape(lights[k]) << "</text>\n";
   }
   out << "</g>\n" << body.str() << "</svg>\n";
 }

@@ -27,7 +27,8 @@ FaceShadow unite_shadows(const Face& face, std::vector<OccluderShadow> occluders
   std::vector<Ring2> polygons;
   for (const OccluderShadow& occluder : occluders) polygons.push_back(occluder.polygon);
   // Section 3.2: the shadow areas on the face are the union of the shadows cast on it.
-  result.shadow = polygons.size() == 1 ? convex_region(polygons.front()) : detail::unite_minus(polygons);
+  result.shadow =
+      polygons.size() == 1 ? convex_region(polygons.front()) : detail::unite_minus(polygons);
   result.lit = detail::unite_minus({ring}, polygons);
   result.occluders = std::move(occluders);
   return result;

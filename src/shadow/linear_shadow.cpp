@@ -64,8 +64,10 @@ LinearShadowRings project_contours(const ConvexPolyhedron& solid, const Face& fa
   // forms a penumbra area". The contours run clockwise; the frame's order is
   // counter-clockwise, so each projected contour is reversed.
   // canonical_ring drops vertices that project onto one another or onto a line.
-  const Ring2 c1 = canonical_ring(counter_clockwise(projected_contour(solid, volumes.contour1, face, q1)));
-  const Ring2 c2 = canonical_ring(counter_clockwise(projected_contour(solid, volumes.contour2, face, q2)));
+  const Ring2 c1 =
+      canonical_ring(counter_clockwise(projected_contour(solid, volumes.contour1, face, q1)));
+  const Ring2 c2 =
+      canonical_ring(counter_clockwise(projected_contour(solid, volumes.contour2, face, q2)));
   Ring2 both = c1;
   both.insert(both.end(), c2.begin(), c2.end());
   Ring2 hull;

@@ -94,8 +94,9 @@ OpenVolume point_shadow_volume(const ConvexPolyhedron& solid, const Point3& q) {
   if (loop.empty()) return volume;
   const Point3 inside = inner_point(solid);
   for (std::size_t i = 0; i < loop.size(); ++i)
-    add_unique(volume.planes, plane_away_from(q, solid.vertices()[loop[i]],
-                                              solid.vertices()[loop[(i + 1) % loop.size()]], inside));
+    add_unique(volume.planes,
+               plane_away_from(q, solid.vertices()[loop[i]],
+                               solid.vertices()[loop[(i + 1) % loop.size()]], inside));
   for (const Face& face : solid.faces())
     if (turned_toward(face, q)) add_unique(volume.planes, face.plane);
   return volume;
@@ -191,12 +192,13 @@ std::vector<Plane3> penumbra_planes_by_hull(const ConvexPolyhedron& solid, const
   const ConvexPolyhedron hull = ConvexPolyhedron::hull(points);
   std::vector<Plane3> planes;
   for (const Face& face : hull.faces()) {
-    const bool touches = std::any_of(face.vertices.begin(), face.vertices.end(), [&](const Point3& p) {
-      return std::binary_search(solid.vertices().begin(), solid.vertices().end(), p,
-                                [](const Point3& a, const Point3& b) {
-                                  return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
-                                });
-    });
+    const bool touches =
+        std::any_of(face.vertices.begin(), face.vertices.end(), [&](const Point3& p) {
+          return std::binary_search(solid.vertices().begin(), solid.vertices().end(), p,
+                                    [](const Point3& a, const Point3& b) {
+                                      return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
+                                    });
+        });
     if (touches) planes.push_back(face.plane);
   }
   return planes;

@@ -36,7 +36,9 @@ int net_crossings(Arrangement::Halfedge_const_handle edge, const std::vector<Seg
   for (const Segment2& segment : segments) {
     if (!segment.has_on(source) || !segment.has_on(target)) continue;
     // Same direction when the segment's source comes first along the halfedge.
-    net += (CGAL::compare_distance_to_point(segment.source(), source, target) == CGAL::SMALLER) ? 1 : -1;
+    net += (CGAL::compare_distance_to_point(segment.source(), source, target) == CGAL::SMALLER)
+               ? 1
+               : -1;
   }
   return net;
 }

@@ -138,7 +138,6 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
   return result;
 }
 
-
 // The same for a linear source (Nishita 1985 section 4.1, docs/linear-shadows.md),
 // culled by a sphere around the tube's capsule of lighting.
 LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& receivers,
@@ -160,8 +159,8 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   stats.pairs_possible = receivers.size() * (scene.objects.size() - 1);
 
   std::optional<LightingSphere> sphere;
-  const double threshold = options.range_lux ? *options.range_lux
-                                             : options.range_fraction * options.full_scale_lux;
+  const double threshold =
+      options.range_lux ? *options.range_lux : options.range_fraction * options.full_scale_lux;
   if (threshold > 0)
     sphere = LightingSphere::around_segment(q1, q2, tube.candela_per_metre, threshold);
   if (sphere) stats.radius = sphere->radius();
@@ -198,9 +197,11 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
       result.faces[active_index[a]] = linear_face_shadow(face, q1, q2, std::move(occluders));
     } catch (const std::domain_error&) {
       throw InputError(scene.file.string(), light.json_path,
-                       "the linear source '" + light.name + "' touches or passes through an "
-                       "object that shadows face " + std::to_string(active[a].face) +
-                       " of '" + object.name + "': not supported (docs/linear-shadows.md)");
+                       "the linear source '" + light.name +
+                           "' touches or passes through an "
+                           "object that shadows face " +
+                           std::to_string(active[a].face) + " of '" + object.name +
+                           "': not supported (docs/linear-shadows.md)");
     }
   };
   for_each_receiver(active.size(), options.parallel, shade);
@@ -209,8 +210,7 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
     stats.faces_away += face.faces_away;
     stats.pairs_shadowing += face.occluders.size();
   }
-  stats.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

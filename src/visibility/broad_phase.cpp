@@ -35,9 +35,9 @@ CGAL::Bbox_3 region_box(const Face& face, const LightPosition& light, const CGAL
 
 // intersects the receivers' region boxes with the objects' boxes.
 template <typename RegionBox>
-std::vector<std::vector<std::size_t>> intersect_boxes(const std::vector<const ConvexPolyhedron*>& objects,
-                                                      const std::vector<Receiver>& receivers,
-                                                      RegionBox region_box) {
+std::vector<std::vector<std::size_t>> intersect_boxes(
+    const std::vector<const ConvexPolyhedron*>& objects, const std::vector<Receiver>& receivers,
+    RegionBox region_box) {
   std::vector<Box> object_boxes;
   CGAL::Bbox_3 scene;
   for (std::size_t k = 0; k < objects.size(); ++k) {

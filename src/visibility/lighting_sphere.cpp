@@ -13,7 +13,7 @@ LightingSphere LightingSphere::absolute(const Point3& centre, double max_candela
 }
 
 LightingSphere LightingSphere::around_segment(const Point3& a, const Point3& b,
-                                             double candela_per_metre, double lux) {
+                                              double candela_per_metre, double lux) {
   CGAL_precondition(lux > 0);
   const double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
   const double radius = std::sqrt(candela_per_metre * length / lux) + length / 2;

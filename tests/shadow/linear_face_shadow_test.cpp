@@ -7,9 +7,9 @@
 #include <random>
 
 #include "linear_oracle.h"
-#include "solids.h"
 #include "penumbra/shadow/face_shadow.h"
 #include "penumbra/shadow/linear_face_shadow.h"
+#include "solids.h"
 
 using namespace penumbra;
 

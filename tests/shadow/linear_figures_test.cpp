@@ -7,9 +7,9 @@
 #include <algorithm>
 
 #include "penumbra/shadow/contour.h"
-#include "solids.h"
 #include "penumbra/shadow/linear_shadow.h"
 #include "penumbra/shadow/shadow_loops.h"
+#include "solids.h"
 
 using namespace penumbra;
 

@@ -8,10 +8,10 @@
 #include <random>
 
 #include "linear_oracle.h"
-#include "solids.h"
 #include "penumbra/scene/load_scene.h"
 #include "penumbra/shadow/face_shadow.h"
 #include "penumbra/shadow/shadow_map.h"
+#include "solids.h"
 #include "support/fixtures.h"
 
 using namespace penumbra;
@@ -69,15 +69,20 @@ BOOST_AUTO_TEST_CASE(every_face_of_the_linear_fixtures_agrees_with_the_oracles) 
           for (std::size_t o = 0; o < scene.objects.size(); ++o) {
             if (o == result.receivers[r].object) continue;
             const ConvexPolyhedron& solid = scene.objects[o].solid;
-            blocked = blocked || test::source_partly_blocked(x, source->first, source->second, solid);
+            blocked =
+                blocked || test::source_partly_blocked(x, source->first, source->second, solid);
             umbra = umbra || (test::point_blocked(x, source->first, solid) &&
                               test::point_blocked(x, source->second, solid));
           }
           const Point2 p = face.frame.to_frame(x);
           const auto shadow_side = side_of(shadow.shadow, p), umbra_side = side_of(shadow.umbra, p);
           if (shadow_side == CGAL::ON_BOUNDED_SIDE) BOOST_TEST(blocked, name << " " << object.name);
-          if (shadow_side == CGAL::ON_UNBOUNDED_SIDE) BOOST_TEST(!blocked, name << " " << object.name << " face " << result.receivers[r].face << " light " << scene.lights[light.light].name << " x " << x);
-          if (umbra_side == CGAL::ON_BOUNDED_SIDE) BOOST_TEST(umbra, name << " " << object.name << " face " << result.receivers[r].face << " light " << scene.lights[light.light].name << " x " << x);
+          if (shadow_side == CGAL::ON_UNBOUNDED_SIDE)
+            BOOST_TEST(!blocked, name << " " << object.name << " face " << result.receivers[r].face
+                                      << " light " << scene.lights[light.light].name << " x " << x);
+          if (umbra_side == CGAL::ON_BOUNDED_SIDE)
+            BOOST_TEST(umbra, name << " " << object.name << " face " << result.receivers[r].face
+                                   << " light " << scene.lights[light.light].name << " x " << x);
           if (umbra_side == CGAL::ON_UNBOUNDED_SIDE) BOOST_TEST(!umbra, name << " " << object.name);
           ++compared;
           in_shadow += blocked;

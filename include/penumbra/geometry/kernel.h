@@ -5,7 +5,7 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
-#include <array>
+#include "penumbra/vec3d.h"
 
 namespace penumbra {
 
@@ -22,8 +22,6 @@ using Point2 = Kernel::Point_2;
 using Vector2 = Kernel::Vector_2;
 using Segment2 = Kernel::Segment_2;
 
-// A double-precision triple, the form coordinates take in files and magnitudes.
-using Vec3d = std::array<double, 3>;
 
 // converts a double triple to the exact point it denotes (each double is a rational).
 inline Point3 to_exact(const Vec3d& p) {

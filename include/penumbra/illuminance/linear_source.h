@@ -12,6 +12,7 @@
 //
 // Parameters along the source are fractions u in [0, 1]: Q(u) = A + u (B - A).
 
+#include "penumbra/vec3d.h"
 #include <array>
 #include <optional>
 #include <utility>
@@ -20,7 +21,6 @@
 namespace penumbra {
 
 // The same alias as in geometry/kernel.h (restated to keep CGAL out of magnitude code).
-using Vec3d = std::array<double, 3>;
 
 namespace illuminance {
 

@@ -3,6 +3,7 @@
 // Doubles only: this header decides no geometric question (shadows are the shadow layer's
 // business); it turns "the lamp is seen from P" into lux. See docs/illuminance.md.
 
+#include "penumbra/vec3d.h"
 #include <array>
 #include <type_traits>
 #include <utility>
@@ -11,7 +12,6 @@ namespace penumbra {
 
 // A double-precision triple; the same alias as in geometry/kernel.h, restated here so
 // that magnitude code does not pull in the exact kernel's headers.
-using Vec3d = std::array<double, 3>;
 
 namespace illuminance {
 

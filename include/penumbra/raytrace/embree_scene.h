@@ -5,6 +5,7 @@
 // Embree traverses in single precision; each hit is refined in double precision against the
 // exact face plane or the exact sphere, so hit points lie on the surface to double rounding.
 
+#include "penumbra/vec3d.h"
 #include <array>
 #include <cstddef>
 #include <limits>
@@ -14,7 +15,6 @@
 
 namespace penumbra {
 
-using Vec3d = std::array<double, 3>;
 struct Scene;
 
 namespace raytrace {

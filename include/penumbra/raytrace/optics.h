@@ -6,13 +6,13 @@
 //
 // Directions are double triples; V is the direction the ray travels (toward the surface).
 
+#include "penumbra/vec3d.h"
 #include <array>
 #include <optional>
 
 namespace penumbra {
 
 // The same alias as in geometry/kernel.h, restated to keep CGAL out of magnitude code.
-using Vec3d = std::array<double, 3>;
 
 namespace raytrace {
 

@@ -4,12 +4,12 @@
 // y in [0, height] downward, so pixel (i, j) covers [i, i+1] x [j, j+1], its centre is
 // (i + 0.5, j + 0.5) and its corners (Whitted section 3, Fig. 5a) are integer points.
 
+#include "penumbra/vec3d.h"
 #include <array>
 #include <optional>
 
 namespace penumbra {
 
-using Vec3d = std::array<double, 3>;
 struct Camera;
 
 namespace raytrace {

@@ -5,14 +5,13 @@
 // return quadrature nodes over the visible intervals in the same SourceElement form, so
 // the ray tracer's shading does not change. See docs/raytrace.md.
 
-#include <array>
+#include "penumbra/vec3d.h"
 #include <cstdint>
 #include <functional>
 #include <vector>
 
 namespace penumbra {
 
-using Vec3d = std::array<double, 3>;
 struct LinearLight;
 
 namespace raytrace {

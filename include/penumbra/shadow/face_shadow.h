@@ -28,11 +28,11 @@ struct OccluderShadow {
 };
 
 struct FaceShadow {
-  bool faces_away = false;    // the source is not strictly on the face's outer side
-  bool beyond_range = false;  // the face lies wholly outside the sphere of lighting: not computed
-  bool linear = false;        // computed for a linear source: umbra and penumbra below apply
-  bool source_clipped = false;   // linear: the face's plane cuts the source (Fig. 7, S3)
-  bool joint_occlusion = false;  // linear: two occluders' penumbrae overlap
+  bool faces_away = false;      // the source is not strictly on the face's outer side
+  bool beyond_range = false;    // the face lies wholly outside the sphere of lighting: not computed
+  bool linear = false;          // computed for a linear source: umbra and penumbra below apply
+  bool source_clipped = false;  // linear: the face's plane cuts the source (Fig. 7, S3)
+  bool joint_occlusion = false;           // linear: two occluders' penumbrae overlap
   std::vector<OccluderShadow> occluders;  // sorted by occluder
   Region2 shadow;                         // = umbra for point and directional sources
   Region2 umbra;                          // linear: union of the occluders' umbrae

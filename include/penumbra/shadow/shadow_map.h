@@ -18,8 +18,7 @@
 namespace penumbra {
 
 struct ShadowOptions {
-  std::optional<std::string>
-      light;  // only the light of this name; all lights otherwise
+  std::optional<std::string> light;  // only the light of this name; all lights otherwise
   // threshold illuminance of the sphere of lighting as a fraction of the display's
   // full scale (Nishita 1985 section 3.1: 1/256 for an 8-bit display), the same
   // partial sphere `penumbra lid info` reports; 0 disables range culling.
