@@ -57,8 +57,7 @@ std::vector<double> parse_levels(const std::string& text) {
     double value = 0;
     const char* end = field.data() + field.size();
     const auto [stop, error] = std::from_chars(field.data(), end, value);
-    if (field.empty() || error != std::errc() || stop != end || !std::isfinite(value) ||
-        value <= 0)
+    if (field.empty() || error != std::errc() || stop != end || !std::isfinite(value) || value <= 0)
       throw InputError("", "--levels", "not a positive number: \"" + field + "\"");
     levels.push_back(value);
   }
@@ -67,8 +66,7 @@ std::vector<double> parse_levels(const std::string& text) {
   return levels;
 }
 
-void write_values(const std::string& path, const Scene& scene,
-                  const render::RenderedImage& image) {
+void write_values(const std::string& path, const Scene& scene, const render::RenderedImage& image) {
   io::write_atomically(path, [&](std::ostream& out) {
     out << "px,py,object,face,E,L\n" << std::setprecision(12);
     for (int j = 0; j < image.height; ++j)
@@ -126,11 +124,10 @@ int run_render(const RenderArguments& args) {
   const auto seconds = [](auto from, auto to) {
     return std::chrono::duration<double>(to - from).count();
   };
-  std::cout << "render " << image.width << " x " << image.height << ", interval "
-            << args.interval << "\n"
+  std::cout << "render " << image.width << " x " << image.height << ", interval " << args.interval
+            << "\n"
             << "spans " << image.visibility.spans << ", pieces " << image.visibility.pieces
-            << ", illuminance evaluations " << image.evaluations << " ("
-            << std::setprecision(3)
+            << ", illuminance evaluations " << image.evaluations << " (" << std::setprecision(3)
             << static_cast<double>(image.evaluations) / (image.width * image.height)
             << " per pixel), shadow boundary crossings " << image.boundary_crossings << "\n"
             << "E " << minimum << " .. " << maximum << " lx on visible faces\n"

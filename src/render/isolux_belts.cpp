@@ -17,10 +17,18 @@ Rgb8 belt_colour(double e, double maximum) {
   const double f = hue - sextant;
   double r = 0, g = 0, b = 0;
   switch (sextant) {
-    case 0: r = 1, g = f; break;          // red -> yellow
-    case 1: r = 1 - f, g = 1; break;      // yellow -> green
-    case 2: g = 1, b = f; break;          // green -> cyan
-    default: g = 1 - f, b = 1; break;     // cyan -> blue
+    case 0:
+      r = 1, g = f;
+      break;  // red -> yellow
+    case 1:
+      r = 1 - f, g = 1;
+      break;  // yellow -> green
+    case 2:
+      g = 1, b = f;
+      break;  // green -> cyan
+    default:
+      g = 1 - f, b = 1;
+      break;  // cyan -> blue
   }
   const auto byte = [](double v) { return static_cast<std::uint8_t>(std::lround(255 * v)); };
   return {byte(r), byte(g), byte(b)};
@@ -39,7 +47,9 @@ void paint_isolux_belts(std::vector<std::uint8_t>& rgb, const RenderedImage& ima
   for (std::size_t pixel = 0; pixel < image.illuminance.size(); ++pixel) {
     if (image.visibility.objects[pixel] < 0) continue;
     const double e = image.illuminance[pixel];
-    if (isolux_band(e, levels) % 2 == 0) continue;
+    // above the highest level there is no closing line: the shaded image shows through
+    const int band = isolux_band(e, levels);
+    if (band % 2 == 0 || band == static_cast<int>(levels.size())) continue;
     const Rgb8 colour = belt_colour(e, maximum);
     for (int c = 0; c < 3; ++c) rgb[3 * pixel + c] = colour[c];
   }

@@ -206,8 +206,9 @@ RenderedImage ScanlineRenderer::render(const RenderOptions& options) const {
     }
   };
   if (options.parallel && impl_->parallel)
-    tbb::parallel_for(tbb::blocked_range<int>(0, image.height),
-                      [&](const tbb::blocked_range<int>& range) { rows(range.begin(), range.end()); });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, image.height),
+        [&](const tbb::blocked_range<int>& range) { rows(range.begin(), range.end()); });
   else
     rows(0, image.height);
   image.evaluations = evaluations;

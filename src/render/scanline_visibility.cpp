@@ -74,8 +74,8 @@ std::vector<FrontFace> front_faces(const Scene& scene, const V3& eye) {
   for (std::size_t object = 0; object < scene.objects.size(); ++object) {
     const auto& faces = scene.objects[object].solid.faces();
     for (std::size_t face = 0; face < faces.size(); ++face) {
-      FrontFace front{static_cast<long>(object), static_cast<int>(face), {}, face_plane(faces[face]),
-                      0};
+      FrontFace front{
+          static_cast<long>(object), static_cast<int>(face), {}, face_plane(faces[face]), 0};
       front.eye_distance = dot(front.plane.normal, eye) + front.plane.offset;
       if (!(front.eye_distance > 0)) continue;
       for (const Point3& vertex : faces[face].vertices) front.vertices.push_back(to_double(vertex));
@@ -178,9 +178,11 @@ std::size_t resolve_row(const std::vector<Span>& spans, const std::vector<FrontF
       if (span.left < middle && middle < span.right) active.push_back(&span);
     if (active.empty()) continue;
     ++pieces;
-    // the nearest face at the piece's left end (largest 1/t; ties go to the one nearer at
-    // the right end), then wherever another face overtakes it, split the piece there.
-    double at = from;
+    // the nearest face at the piece's first pixel centre (largest 1/t; ties go to the one
+    // nearer to the right), then wherever another face overtakes it, split the piece there.
+    // Faces that touch (a screen standing on the floor) meet exactly at a piece's end, so
+    // the comparison is made at a pixel centre, never at the end itself.
+    double at = std::ceil(from - 0.5) + 0.5;
     const Span* nearest = nullptr;
     for (const Span* span : active) {
       if (!nearest) {
@@ -202,7 +204,7 @@ std::size_t resolve_row(const std::vector<Span>& spans, const std::vector<FrontF
           successor = span;
         }
       }
-      fill(at, next, nearest);
+      fill(at == std::ceil(from - 0.5) + 0.5 ? from : at, next, nearest);
       if (!successor) break;
       at = next;
       nearest = successor;
@@ -240,8 +242,9 @@ VisibilityMap scanline_visibility(const Scene& scene, const Camera& camera, bool
     }
   };
   if (parallel) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, map.height),
-                      [&](const tbb::blocked_range<int>& rows) { run_rows(rows.begin(), rows.end()); });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, map.height),
+        [&](const tbb::blocked_range<int>& rows) { run_rows(rows.begin(), rows.end()); });
   } else {
     run_rows(0, map.height);
   }

@@ -1,30 +1,14 @@
 #pragma once
-// Small double-precision vector helpers of the renderer (private).
+// The double-precision vector helpers of include/penumbra/vec3d.h, for the renderer
+// (private; magnitudes and image-space positions only).
 
-#include <array>
-#include <cmath>
+#include "penumbra/vec3d.h"
 
 namespace penumbra::render::detail {
 
-using V3 = std::array<double, 3>;
+using V3 = Vec3d;
+using namespace penumbra::vector_ops;
 
-inline V3 operator-(const V3& p, const V3& q) {
-  return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-}
-inline V3 operator+(const V3& p, const V3& q) {
-  return {p[0] + q[0], p[1] + q[1], p[2] + q[2]};
-}
-inline V3 operator*(double s, const V3& v) {
-  return {s * v[0], s * v[1], s * v[2]};
-}
-inline double dot(const V3& p, const V3& q) {
-  return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
-}
-inline V3 cross(const V3& p, const V3& q) {
-  return {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
-}
-inline V3 normalized(const V3& v) {
-  return (1 / std::sqrt(dot(v, v))) * v;
-}
+inline double norm(const V3& v) { return length(v); }
 
 }  // namespace penumbra::render::detail

@@ -111,8 +111,9 @@ BOOST_AUTO_TEST_CASE(interval_one_equals_the_solver_at_the_visible_point) {
         if (expected > 0) ++lit;
         if (std::abs(image.illuminance[pixel] - expected) > 1e-9 * std::max(expected, 1e-3)) {
           if (++wrong <= 5)
-            BOOST_TEST_MESSAGE(name << " pixel (" << i << ", " << j << "): " << image.illuminance[pixel]
-                                    << " lx, solver " << expected << " lx");
+            BOOST_TEST_MESSAGE(name << " pixel (" << i << ", " << j
+                                    << "): " << image.illuminance[pixel] << " lx, solver "
+                                    << expected << " lx");
         }
       }
     BOOST_TEST_MESSAGE(name << ": " << checked << " pixels, " << lit << " lit, " << wrong
@@ -124,8 +125,8 @@ BOOST_AUTO_TEST_CASE(interval_one_equals_the_solver_at_the_visible_point) {
 }
 
 BOOST_AUTO_TEST_CASE(interpolation_error_at_intervals_three_and_five_is_bounded) {
-  for (const char* name : {"scenes/office.json", "scenes/render-interior.json",
-                           "scenes/render-room-linear.json"}) {
+  for (const char* name :
+       {"scenes/office.json", "scenes/render-interior.json", "scenes/render-room-linear.json"}) {
     const Scene scene = resized(name, 240, 180);
     const ScanlineRenderer renderer(scene, *scene.camera);
     RenderOptions options;
@@ -139,7 +140,8 @@ BOOST_AUTO_TEST_CASE(interpolation_error_at_intervals_three_and_five_is_bounded)
                               << ", mean " << error.mean << " of the largest E; evaluations "
                               << coarse.evaluations << " of " << exact.evaluations);
       // shadow edges are sampled on both sides, so what is left is the curvature of E
-      // between samples: measured max 0.0x, mean 1e-4 (docs/render.md)
+      // between samples: measured at 240 x 180, max 0.029 (render-room-linear, interval 5),
+      // mean at most 1.9e-4 (docs/render.md)
       BOOST_TEST(error.max < 0.05, name << " interval " << interval);
       BOOST_TEST(error.mean < 0.002, name << " interval " << interval);
       BOOST_TEST(coarse.evaluations < exact.evaluations / 2);
@@ -171,7 +173,8 @@ BOOST_AUTO_TEST_CASE(shadow_edges_land_on_the_derived_pixels) {
       for (int i = before_left_edge + 1; i <= before_right_edge; ++i)
         BOOST_TEST(e(i) == 0.0, "interval " << interval << " pixel " << i);
       BOOST_TEST(e(before_right_edge + 1) == lit_lux, boost::test_tools::tolerance(1e-12));
-      BOOST_TEST(e(199) == lit_lux, boost::test_tools::tolerance(1e-12));
+      // the floor ends at X = 4 (x = 140): well inside it, past the shadow, still lit
+      BOOST_TEST(e(135) == lit_lux, boost::test_tools::tolerance(1e-12));
     }
   }
 }

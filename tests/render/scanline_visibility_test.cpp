@@ -54,7 +54,8 @@ Hit cast(const Scene& scene, const Vec3d& eye, const Vec3d& direction) {
     const auto& faces = scene.objects[object].solid.faces();
     for (std::size_t face = 0; face < faces.size(); ++face) {
       std::vector<Vec3d> vertices;
-      for (const auto& vertex : faces[face].vertices) vertices.push_back(penumbra::to_double(vertex));
+      for (const auto& vertex : faces[face].vertices)
+        vertices.push_back(penumbra::to_double(vertex));
       Vec3d normal = unit(cross(sub(vertices[1], vertices[0]), sub(vertices[2], vertices[0])));
       const double denominator = dot(normal, direction);
       if (!(denominator < 0)) continue;  // back face or edge-on
@@ -145,7 +146,8 @@ BOOST_AUTO_TEST_CASE(figure_11_scenes_match_a_ray_cast) {
 }
 
 BOOST_AUTO_TEST_CASE(camera_inside_the_scene_sees_faces_passing_behind_it) {
-  // the eye stands on the floor plate's far side of the box: faces cross behind the eye.
+  // the eye stands inside the room, 0.3 m above the floor: the floor and walls pass
+  // behind it, so their scan segments are clipped in front of the eye.
   Scene scene = penumbra::load_scene(fixture("scenes/office.json"));
   scene.camera->eye = {3.0, 3.6, 0.3};
   scene.camera->target = {0.5, 0.2, 1.2};

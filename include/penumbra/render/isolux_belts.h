@@ -21,7 +21,7 @@ using Rgb8 = std::array<std::uint8_t, 3>;
 Rgb8 belt_colour(double e, double maximum);
 
 // returns the band of e: the number of levels at or below e (levels increasing). Pixels
-// in odd bands are painted.
+// in odd bands below the last (between two levels) are painted.
 int isolux_band(double e, const std::vector<double>& levels);
 
 // paints the belts of image's illuminance into rgb (3 bytes per pixel, rows from the top,

@@ -31,10 +31,10 @@ struct RenderedImage {
   int width = 0;
   int height = 0;
   VisibilityMap visibility;
-  std::vector<double> illuminance;  // E, lux, per pixel; 0 where nothing is seen
-  std::vector<double> luminance;    // L = rho E / pi, cd/m^2, per pixel
-  std::vector<Colour> radiance;     // L tinted by the material colour, per channel
-  std::size_t evaluations = 0;      // exact illuminance evaluations
+  std::vector<double> illuminance;     // E, lux, per pixel; 0 where nothing is seen
+  std::vector<double> luminance;       // L = rho E / pi, cd/m^2, per pixel
+  std::vector<Colour> radiance;        // L tinted by the material colour, per channel
+  std::size_t evaluations = 0;         // exact illuminance evaluations
   std::size_t boundary_crossings = 0;  // shadow boundaries met on scan lines
 
   std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * width + i; }
