@@ -30,19 +30,6 @@ struct RaytraceArguments {
   int tube_samples = 16;
 };
 
-// returns the exposure given on the command line, 0 for "auto", or -1 when it is neither.
-double parse_exposure(const std::string& text) {
-  if (text == "auto") return 0;
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    return -1;
-  }
-  return used == text.size() && value > 0 ? value : -1;
-}
-
 void write_values(const std::string& path, const Scene& scene,
                   const raytrace::RenderedImage& image) {
   io::write_atomically(path, [&](std::ostream& out) {

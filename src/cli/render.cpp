@@ -35,19 +35,6 @@ struct RenderArguments {
   int height = 0;
 };
 
-// returns the exposure given on the command line, 0 for "auto", or -1 when it is neither.
-double parse_exposure(const std::string& text) {
-  if (text == "auto") return 0;
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    return -1;
-  }
-  return used == text.size() && value > 0 ? value : -1;
-}
-
 // returns the levels of --levels, increasing and distinct; each must be a positive number.
 std::vector<double> parse_levels(const std::string& text) {
   std::vector<double> levels;
