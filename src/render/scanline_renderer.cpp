@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "penumbra/illuminance/scene_illuminance.h"
+#include "penumbra/io/progress.h"
 #include "penumbra/shadow/shadow_map.h"
 #include "vector3.h"
 
@@ -198,11 +199,14 @@ RenderedImage ScanlineRenderer::render(const RenderOptions& options) const {
   image.luminance.assign(pixels, 0);
   image.radiance.assign(pixels, Colour{0, 0, 0});
   std::atomic<std::size_t> evaluations{0}, crossings{0};
+  // Long renders show progress per scan line on a terminal (quiet otherwise).
+  io::Progress progress("shading scan lines", static_cast<std::size_t>(image.height));
   const auto rows = [&](int first, int last) {
     for (int j = first; j < last; ++j) {
       const auto counts = impl_->shade_row(j, options.interval, image);
       evaluations += counts[0];
       crossings += counts[1];
+      progress.advance();
     }
   };
   if (options.parallel && impl_->parallel)
