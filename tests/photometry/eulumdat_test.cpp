@@ -10,6 +10,7 @@
 
 #include "penumbra/input_error.h"
 #include "penumbra/photometry/eulumdat.h"
+#include "midpoint_flux.h"
 #include "printing.h"
 #include "support/fixtures.h"
 
@@ -20,15 +21,7 @@ using penumbra::test::shared_photometry;
 
 namespace {
 
-double midpoint_flux(const Distribution& lid) {
-  constexpr int nu = 1440, nc = 720;
-  double total = 0;
-  for (int i = 0; i < nu; ++i) {
-    const double gamma = std::acos(1 - (i + 0.5) * 2.0 / nu);
-    for (int j = 0; j < nc; ++j) total += lid.intensity(gamma, (j + 0.5) * 2 * kPi / nc);
-  }
-  return total * (2.0 / nu) * (2 * kPi / nc);
-}
+using test::midpoint_flux;
 
 TableDistribution load(const std::string& name, std::size_t lamp_set = 0) {
   return TableDistribution(candela_grid(read_eulumdat(shared_photometry(name)), lamp_set),

@@ -11,6 +11,7 @@
 
 #include "penumbra/input_error.h"
 #include "penumbra/photometry/ies.h"
+#include "midpoint_flux.h"
 #include "printing.h"
 #include "support/fixtures.h"
 
@@ -21,16 +22,7 @@ using penumbra::test::shared_photometry;
 
 namespace {
 
-// Independent flux: the midpoint rule in u = cos(gamma) and C over intensity().
-double midpoint_flux(const Distribution& lid) {
-  constexpr int nu = 1440, nc = 720;
-  double total = 0;
-  for (int i = 0; i < nu; ++i) {
-    const double gamma = std::acos(1 - (i + 0.5) * 2.0 / nu);
-    for (int j = 0; j < nc; ++j) total += lid.intensity(gamma, (j + 0.5) * 2 * kPi / nc);
-  }
-  return total * (2.0 / nu) * (2 * kPi / nc);
-}
+using test::midpoint_flux;
 
 std::vector<std::filesystem::path> files_in(const std::string& folder) {
   std::vector<std::filesystem::path> files;

@@ -16,17 +16,6 @@ bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-// reads a PNG's width and height from its IHDR chunk (big-endian at bytes 16..23).
-std::pair<unsigned, unsigned> png_size(const std::string& bytes) {
-  const auto word = [&](std::size_t at) {
-    unsigned value = 0;
-    for (std::size_t k = 0; k < 4; ++k)
-      value = (value << 8) | static_cast<unsigned char>(bytes[at + k]);
-    return value;
-  };
-  return {word(16), word(20)};
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(raytrace_cli)
@@ -41,8 +30,8 @@ BOOST_AUTO_TEST_CASE(writes_the_image_the_values_and_a_ray_report) {
   const std::string png = penumbra::test::read_text(image);
   BOOST_REQUIRE(png.size() > 24);
   BOOST_TEST(png.substr(1, 3) == "PNG");
-  BOOST_TEST(png_size(png).first == 160u);
-  BOOST_TEST(png_size(png).second == 120u);
+  BOOST_TEST(penumbra::test::png_size(png).first == 160u);
+  BOOST_TEST(penumbra::test::png_size(png).second == 120u);
   BOOST_TEST(contains(result.out, "rays "));
   BOOST_TEST(contains(result.out, "refracted "));
 

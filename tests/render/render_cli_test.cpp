@@ -14,17 +14,6 @@ using penumbra::test::scratch_dir;
 
 namespace {
 
-// reads a PNG's width and height from its IHDR chunk (big-endian at bytes 16..23).
-std::pair<unsigned, unsigned> png_size(const std::string& bytes) {
-  const auto word = [&](std::size_t at) {
-    unsigned value = 0;
-    for (std::size_t k = 0; k < 4; ++k)
-      value = (value << 8) | static_cast<unsigned char>(bytes[at + k]);
-    return value;
-  };
-  return {word(16), word(20)};
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(render_cli)
@@ -36,7 +25,7 @@ BOOST_AUTO_TEST_CASE(writes_the_image_and_one_row_per_pixel) {
                    (dir / "edge.png").string() + " --width 40 --height 30 --values " +
                    (dir / "edge.csv").string());
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
-  BOOST_TEST((png_size(read_text(dir / "edge.png")) == std::make_pair(40u, 30u)));
+  BOOST_TEST((penumbra::test::png_size(read_text(dir / "edge.png")) == std::make_pair(40u, 30u)));
   std::istringstream csv(read_text(dir / "edge.csv"));
   std::string line;
   std::getline(csv, line);

@@ -11,6 +11,7 @@
 
 #include "penumbra/render/scanline_visibility.h"
 #include "penumbra/scene/load_scene.h"
+#include "vector_names.h"
 #include "support/fixtures.h"
 
 namespace {
@@ -19,24 +20,12 @@ using penumbra::Scene;
 using penumbra::Vec3d;
 using penumbra::test::fixture;
 
-Vec3d sub(const Vec3d& a, const Vec3d& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3d add(const Vec3d& a, const Vec3d& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-Vec3d scale(double s, const Vec3d& a) {
-  return {s * a[0], s * a[1], s * a[2]};
-}
-double dot(const Vec3d& a, const Vec3d& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3d cross(const Vec3d& a, const Vec3d& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3d unit(const Vec3d& a) {
-  return scale(1 / std::sqrt(dot(a, a)), a);
-}
+using penumbra::test::add;
+using penumbra::test::cross;
+using penumbra::test::dot;
+using penumbra::test::scale;
+using penumbra::test::sub;
+using penumbra::test::unit;
 
 struct Hit {
   long object = -1;

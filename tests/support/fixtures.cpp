@@ -33,6 +33,17 @@ std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
+std::pair<unsigned, unsigned> png_size(const std::string& bytes) {
+  // Width and height are big-endian words at bytes 16..23 (IHDR).
+  const auto word = [&](std::size_t at) {
+    unsigned value = 0;
+    for (std::size_t k = 0; k < 4; ++k)
+      value = (value << 8) | static_cast<unsigned char>(bytes[at + k]);
+    return value;
+  };
+  return {word(16), word(20)};
+}
+
 std::filesystem::path scratch_dir(const std::string& name) {
   // One directory per process: CTest runs the layers' executables in parallel.
   const auto dir = std::filesystem::temp_directory_path() /

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace penumbra::test {
 
@@ -27,6 +28,9 @@ CommandResult run_penumbra(const std::string& arguments);
 
 // returns a fresh empty directory under the build's temporary area.
 std::filesystem::path scratch_dir(const std::string& name);
+
+// returns a PNG's width and height, read from its IHDR chunk.
+std::pair<unsigned, unsigned> png_size(const std::string& bytes);
 
 // reads a whole file.
 std::string read_text(const std::filesystem::path& path);
