@@ -1,17 +1,24 @@
-// The scanline renderer (issue 7) on the default scene (fixtures/scenes/office.json) at
-// 1920 x 1080, intervals 1, 3 and 5 (Nishita 1985 section 3.3): the time to shade (TBB
-// over scan lines), with the visibility pass and the exact shadows prepared once, and the
-// interpolation error of intervals 3 and 5 against interval 1 (max and mean, relative
-// to the largest E in the image). BM_RenderPrepare times the preparation alone.
+// The scanline renderer (issue 7) at 1920 x 1080, intervals 1, 3 and 5 (Nishita 1985
+// section 3.3), on two scenes: the default scene (fixtures/scenes/office.json) and the
+// 1,000-polyhedron city of city_scene.h (a street lamp, the sun and two tubes) seen from
+// above one corner. BM_RenderPrepare times the preparation (visibility pass, exact
+// shadows of every light on every face, occluder lists, solver); BM_RenderShade/K the
+// shading at interval K (TBB over scan lines) with its interpolation error against
+// interval 1 (max and mean, relative to the largest E in the image). Counters: process
+// CPU seconds (all threads) per iteration beside the wall time.
 
 #include <benchmark/benchmark.h>
+
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <memory>
 #include <string>
 
+#include "city_scene.h"
 #include "penumbra/render/scanline_renderer.h"
 #include "penumbra/scene/load_scene.h"
 
@@ -19,41 +26,77 @@ namespace {
 
 using namespace penumbra;
 
-const Scene& office() {
-  static std::unique_ptr<Scene> scene;
-  if (!scene) {
+enum class Which { office, city };
+
+Scene load(Which which) {
+  Scene scene;
+  if (which == Which::office) {
     // Run from the repository's top directory, or point PENUMBRA_SOURCE_DIR at it.
     const char* top = std::getenv("PENUMBRA_SOURCE_DIR");
-    scene = std::make_unique<Scene>(
-        load_scene(std::string(top ? top : ".") + "/fixtures/scenes/office.json"));
-    scene->camera->width = 1920;
-    scene->camera->height = 1080;
+    scene = load_scene(std::string(top ? top : ".") + "/fixtures/scenes/office.json");
+  } else {
+    scene = parse_scene(bench::city_scene_json(1000), "city.json");
+    // 500 lots on a 23 x 23 grid (230 m square); the eye 90 m above a point off the
+    // south-west corner, looking at the middle (where the lamp and tubes are).
+    scene.camera = Camera{{-40, -40, 90}, {115, 115, 0}, {0, 0, 1}, 50, 0, 0};
   }
-  return *scene;
+  scene.camera->width = 1920;
+  scene.camera->height = 1080;
+  return scene;
 }
 
-const render::ScanlineRenderer& renderer() {
-  static const render::ScanlineRenderer prepared(office(), *office().camera);
-  return prepared;
+struct Prepared {
+  Scene scene;
+  std::unique_ptr<render::ScanlineRenderer> renderer;
+  std::unique_ptr<render::RenderedImage> exact;  // interval 1
+};
+
+Prepared& prepared(Which which) {
+  static std::map<Which, Prepared> cache;
+  auto it = cache.find(which);
+  if (it == cache.end()) {
+    it = cache.emplace(which, Prepared{load(which), nullptr, nullptr}).first;
+    it->second.renderer =
+        std::make_unique<render::ScanlineRenderer>(it->second.scene, *it->second.scene.camera);
+  }
+  return it->second;
 }
 
-const render::RenderedImage& exact_image() {
-  static const render::RenderedImage image = renderer().render({1, true});
-  return image;
+const render::RenderedImage& exact_image(Which which) {
+  Prepared& scene = prepared(which);
+  if (!scene.exact)
+    scene.exact = std::make_unique<render::RenderedImage>(scene.renderer->render({1, true}));
+  return *scene.exact;
 }
 
-void BM_RenderPrepare(benchmark::State& state) {
+double process_cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) { return t.tv_sec + t.tv_usec * 1e-6; };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+void BM_RenderPrepare(benchmark::State& state, Which which) {
+  const Scene& scene = prepared(which).scene;
+  const double cpu_before = process_cpu_seconds();
   for (auto _ : state) {
-    const render::ScanlineRenderer prepared(office(), *office().camera);
-    benchmark::DoNotOptimize(&prepared);
+    const render::ScanlineRenderer renderer(scene, *scene.camera);
+    benchmark::DoNotOptimize(&renderer);
   }
+  state.counters["objects"] = static_cast<double>(scene.objects.size());
+  state.counters["process_cpu_s"] =
+      (process_cpu_seconds() - cpu_before) / static_cast<double>(state.iterations());
 }
 
-void BM_RenderShade(benchmark::State& state) {
+void BM_RenderShade(benchmark::State& state, Which which) {
   const int interval = static_cast<int>(state.range(0));
+  const render::ScanlineRenderer& renderer = *prepared(which).renderer;
+  const render::RenderedImage& exact = exact_image(which);
   render::RenderedImage image;
-  for (auto _ : state) image = renderer().render({interval, true});
-  const render::RenderedImage& exact = exact_image();
+  const double cpu_before = process_cpu_seconds();
+  for (auto _ : state) image = renderer.render({interval, true});
+  state.counters["process_cpu_s"] =
+      (process_cpu_seconds() - cpu_before) / static_cast<double>(state.iterations());
   const double top = *std::max_element(exact.illuminance.begin(), exact.illuminance.end());
   double max_error = 0, sum = 0;
   std::size_t seen = 0;
@@ -65,11 +108,33 @@ void BM_RenderShade(benchmark::State& state) {
     ++seen;
   }
   state.counters["evaluations"] = static_cast<double>(image.evaluations);
+  state.counters["crossings"] = static_cast<double>(image.boundary_crossings);
   state.counters["max_error"] = max_error;
   state.counters["mean_error"] = sum / static_cast<double>(seen);
+  state.counters["max_E_lux"] = top;
 }
 
-BENCHMARK(BM_RenderPrepare)->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(BM_RenderShade)->Arg(1)->Arg(3)->Arg(5)->Unit(benchmark::kMillisecond)->Iterations(2);
-
 }  // namespace
+
+BENCHMARK_CAPTURE(BM_RenderPrepare, office, Which::office)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK_CAPTURE(BM_RenderShade, office, Which::office)
+    ->Arg(1)
+    ->Arg(3)
+    ->Arg(5)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
+BENCHMARK_CAPTURE(BM_RenderPrepare, city, Which::city)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK_CAPTURE(BM_RenderShade, city, Which::city)
+    ->Arg(1)
+    ->Arg(3)
+    ->Arg(5)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(2);

@@ -22,6 +22,7 @@
 #include "penumbra/io/atomic_file.h"
 #include "penumbra/io/progress.h"
 #include "penumbra/scene/load_scene.h"
+#include "numeric_csv.h"
 #include "verbs.h"
 
 namespace penumbra::cli {
@@ -48,76 +49,16 @@ struct Receiver {
 
 // === Reading the points file (header x,y,z,nx,ny,nz; columns found by name)
 
-std::string_view trim(std::string_view text) {
-  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-  while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
-    text.remove_suffix(1);
-  return text;
-}
-
-std::vector<std::string_view> split(std::string_view line) {
-  std::vector<std::string_view> fields;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = line.find(',', start);
-    fields.push_back(
-        trim(line.substr(start, comma == std::string_view::npos ? comma : comma - start)));
-    if (comma == std::string_view::npos) return fields;
-    start = comma + 1;
-  }
-}
-
 // the tolerance on |normal| - 1: enough for normals written with four decimals
 // (0.7071, 0.7071 has length 0.99999); a longer or shorter vector is more likely a column
 // mix-up than a normal, so it is refused rather than silently rescaled.
 constexpr double kNormalLengthTolerance = 1e-3;
 
 std::vector<Receiver> read_points(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file, "", "cannot open the points file");
-  std::string line;
-  if (!std::getline(in, line))
-    throw InputError(file, "line 1", "empty file: expected a header x,y,z,nx,ny,nz");
-  if (line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 byte order mark
-  const std::vector<std::string_view> header = split(line);
-  const char* names[6] = {"x", "y", "z", "nx", "ny", "nz"};
-  std::size_t column[6];
-  for (int c = 0; c < 6; ++c) {
-    std::size_t found = header.size();
-    for (std::size_t k = 0; k < header.size(); ++k)
-      if (header[k] == names[c]) {
-        if (found != header.size())
-          throw InputError(file, "line 1",
-                           std::string("column \"") + names[c] + "\" appears twice");
-        found = k;
-      }
-    if (found == header.size())
-      throw InputError(
-          file, "line 1",
-          std::string("missing column \"") + names[c] + "\" (the header must name x,y,z,nx,ny,nz)");
-    column[c] = found;
-  }
-
   std::vector<Receiver> receivers;
-  for (std::size_t number = 2; std::getline(in, line); ++number) {
-    if (trim(line).empty()) continue;
-    const std::string where = "line " + std::to_string(number);
-    const std::vector<std::string_view> fields = split(line);
-    if (fields.size() != header.size())
-      throw InputError(file, where,
-                       "expected " + std::to_string(header.size()) +
-                           " fields as in the header, found " + std::to_string(fields.size()));
-    double value[6];
-    for (int c = 0; c < 6; ++c) {
-      const std::string_view field = fields[column[c]];
-      const char* end = field.data() + field.size();
-      auto [stop, error] = std::from_chars(field.data(), end, value[c]);
-      if (field.empty() || error != std::errc() || stop != end)
-        throw InputError(file, where + ", column " + names[c],
-                         "not a number: \"" + std::string(field) + "\"");
-      if (!std::isfinite(value[c]))
-        throw InputError(file, where + ", column " + names[c],
-                         "not a finite number: \"" + std::string(field) + "\"");
-    }
+  for (const NumericRow& row : read_numeric_csv(file, {"x", "y", "z", "nx", "ny", "nz"}, "points file")) {
+    const std::vector<double>& value = row.values;
+    const std::string where = "line " + std::to_string(row.line);
     Receiver receiver{{value[0], value[1], value[2]}, {value[3], value[4], value[5]}};
     const double length =
         std::sqrt(value[3] * value[3] + value[4] * value[4] + value[5] * value[5]);
@@ -165,19 +106,6 @@ void write_values(std::ostream& out, const Scene& scene, const std::vector<Recei
   }
 }
 
-std::vector<double> parse_numbers(const std::string& text, const std::string& option) {
-  std::vector<double> numbers;
-  for (std::string_view field : split(text)) {
-    double value = 0;
-    const char* end = field.data() + field.size();
-    auto [stop, error] = std::from_chars(field.data(), end, value);
-    if (field.empty() || error != std::errc() || stop != end || !std::isfinite(value))
-      throw InputError("", option, "not a number: \"" + std::string(field) + "\"");
-    numbers.push_back(value);
-  }
-  return numbers;
-}
-
 int run_points(const IlluminanceArguments& arguments, const Scene& scene) {
   const std::vector<Receiver> receivers = read_points(arguments.points);
   const il::IlluminanceSolver solver(scene);
@@ -202,7 +130,7 @@ int run_points(const IlluminanceArguments& arguments, const Scene& scene) {
 int run_workplane(const IlluminanceArguments& arguments, const Scene& scene) {
   il::PlanRegion region{};
   if (!arguments.region.empty()) {
-    const std::vector<double> corners = parse_numbers(arguments.region, "--region");
+    const std::vector<double> corners = parse_number_list(arguments.region, "--region");
     if (corners.size() != 4) throw InputError("", "--region", "expected x0,y0,x1,y1");
     region = {corners[0], corners[1], corners[2], corners[3]};
     if (!(region.x1 > region.x0) || !(region.y1 > region.y0))
@@ -222,7 +150,7 @@ int run_workplane(const IlluminanceArguments& arguments, const Scene& scene) {
     throw InputError("", "--spacing", "more than 10^8 grid points: use a larger spacing");
   std::vector<double> levels;
   if (!arguments.levels.empty()) {
-    levels = parse_numbers(arguments.levels, "--levels");
+    levels = parse_number_list(arguments.levels, "--levels");
     std::sort(levels.begin(), levels.end());
     levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
   }

@@ -20,10 +20,10 @@ int main(int argc, char** argv) {
   register_render(app);
   register_raytrace(app);
   register_lid(app);
-  register_pending(app, "radiosity", "interreflected illuminance on patches", "#9");
-  register_pending(app, "basis", "basis luminances for relighting", "#9");
-  register_pending(app, "relight", "relight from basis luminances", "#9");
-  register_pending(app, "serve", "interactive lighting design in a browser", "#10");
+  register_radiosity(app);
+  register_basis(app);
+  register_relight(app);
+  register_serve(app);
 
   try {
     app.parse(argc, argv);

@@ -124,7 +124,7 @@ void register_raytrace(CLI::App& app) {
         return parse_exposure(text) < 0 ? "expected 'auto' or a positive number" : "";
       });
   verb->add_option("--tube-samples", args->tube_samples,
-                   "stratified samples per linear source and shading point")
+                   "samples of a tube's Phong highlight per shading point (its diffuse light is exact)")
       ->capture_default_str()
       ->check(CLI::Range(1, 4096));
   verb->add_option("--values", args->values, "CSV of px,py,object,R,G,B (linear luminance)");

@@ -22,14 +22,4 @@ double parse_exposure(const std::string& text) {
   return used == text.size() && value > 0 ? value : -1;
 }
 
-void register_pending(CLI::App& app, const std::string& name, const std::string& description,
-                      const std::string& issue) {
-  CLI::App* verb = app.add_subcommand(name, description + " [not built yet]");
-  verb->allow_extras();
-  verb->callback([name, issue] {
-    std::cerr << "penumbra " << name << ": not built yet (tracked in issue " << issue << ")\n";
-    exit_status() = 2;
-  });
-}
-
 }  // namespace penumbra::cli

@@ -21,13 +21,13 @@ void register_raytrace(CLI::App& app);
 void register_render(CLI::App& app);
 void register_lid(CLI::App& app);
 void register_illuminance(CLI::App& app);
+void register_radiosity(CLI::App& app);
+void register_basis(CLI::App& app);
+void register_relight(CLI::App& app);
+void register_serve(CLI::App& app);
 
 // returns the --exposure value given on the command line: 0 for "auto", the value
 // when it is a positive number, -1 otherwise (shared by render and raytrace).
 double parse_exposure(const std::string& text);
-
-// registers a verb that is not built yet: it says so and exits with status 2.
-void register_pending(CLI::App& app, const std::string& name, const std::string& description,
-                      const std::string& issue);
 
 }  // namespace penumbra::cli

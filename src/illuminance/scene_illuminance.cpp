@@ -4,7 +4,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <variant>
 
 #include "penumbra/illuminance/linear_source.h"
@@ -66,33 +68,205 @@ bool ray_may_meet(const Box& box, const Vec3d& origin, const Vec3d& direction) {
   return true;
 }
 
-// === Per-light data cached by the solver
+// === Interval filters, as in CGAL's filtered predicates: interval arithmetic on the
+// approximations of the exact objects and on the query's doubles certifies most signs;
+// a sign it cannot certify is left to the exact test. No epsilon decides anything: an
+// uncertain interval only costs the time of the exact test.
+
+using Interval = CGAL::Interval_nt<false>;
+
+// A filter's verdict: certainly not, certainly, or "ask the exact test".
+enum class Certainly { no, yes, unknown };
+
+// F(x) = n.x + d for a plane's approximation. Needs Protect_FPU_rounding.
+template <class PlaneApproximation>
+Interval value_at(const PlaneApproximation& plane, const Vec3d& x) {
+  return plane.a() * x[0] + plane.b() * x[1] + plane.c() * x[2] + plane.d();
+}
+
+// n.(to - from) with n and both points given as doubles. Needs Protect_FPU_rounding.
+Interval dot_difference(const Vec3d& n, const Vec3d& to, const Vec3d& from) {
+  return Interval(n[0]) * (Interval(to[0]) - from[0]) +
+         Interval(n[1]) * (Interval(to[1]) - from[1]) +
+         Interval(n[2]) * (Interval(to[2]) - from[2]);
+}
+
+// whether x is strictly on the negative side of plane_of(item) for every item: inside an
+// open convex volume (its planes), or a solid's interior (its faces). Precondition: items
+// is not empty.
+template <class Items, class PlaneOf>
+Certainly negative_everywhere(const Items& items, PlaneOf plane_of, const Vec3d& x) {
+  const CGAL::Protect_FPU_rounding<true> upward;
+  Certainly answer = Certainly::yes;
+  for (const auto& item : items) {
+    const Interval value = value_at(plane_of(item).approx(), x);
+    if (value.inf() >= 0) return Certainly::no;
+    if (!(value.sup() < 0)) answer = Certainly::unknown;
+  }
+  return answer;
+}
+
+Certainly inside_open_volume(const std::vector<Plane3>& planes, const Vec3d& x) {
+  return negative_everywhere(
+      planes, [](const Plane3& plane) -> const Plane3& { return plane; }, x);
+}
+
+Certainly inside_solid(const ConvexPolyhedron& solid, const Vec3d& x) {
+  return negative_everywhere(
+      solid.faces(), [](const Face& face) -> const Plane3& { return face.plane; }, x);
+}
+
+// whether n.(target - point) > 0: target strictly on the outer side of the receiving plane.
+Certainly outer_side(const Vec3d& normal, const Vec3d& target, const Vec3d& point) {
+  const CGAL::Protect_FPU_rounding<true> upward;
+  const Interval value = dot_difference(normal, target, point);
+  if (value.inf() > 0) return Certainly::yes;
+  if (value.sup() <= 0) return Certainly::no;
+  return Certainly::unknown;
+}
+
+// whether the open ray point + t toward, t > 0 (with `end`: the open segment from point to
+// end, 0 < t < 1, toward = end - point), meets the interior of a solid (not flat):
+// ray_hidden's one-dimensional clip by the face planes, in intervals.
+Certainly ray_meets_solid(const ConvexPolyhedron& solid, const Vec3d& point, const Vec3d& toward,
+                          const Vec3d* end = nullptr) {
+  const CGAL::Protect_FPU_rounding<true> upward;
+  Interval low(0);
+  std::optional<Interval> high;
+  if (end) high = Interval(1);
+  bool certain = true;
+  for (const Face& face : solid.faces()) {
+    const auto& plane = face.plane.approx();
+    const Interval at_point = value_at(plane, point);
+    const Interval slope =
+        end ? value_at(plane, *end) - at_point
+            : plane.a() * toward[0] + plane.b() * toward[1] + plane.c() * toward[2];
+    // On the closed outer side and not heading in: the ray never enters.
+    if (at_point.inf() >= 0 && slope.inf() >= 0) return Certainly::no;
+    if (slope.inf() > 0) {
+      const Interval crossing = -at_point / slope;
+      high = high ? Interval(std::min(high->inf(), crossing.inf()),
+                             std::min(high->sup(), crossing.sup()))
+                  : crossing;
+    } else if (slope.sup() < 0) {
+      const Interval crossing = -at_point / slope;
+      low = Interval(std::max(low.inf(), crossing.inf()), std::max(low.sup(), crossing.sup()));
+    } else {
+      certain = false;
+      continue;
+    }
+    // The clip by some of the planes is already empty: so is the clip by all.
+    if (high && low.inf() >= high->sup()) return Certainly::no;
+  }
+  if (certain && (!high || low.sup() < high->inf())) return Certainly::yes;
+  return Certainly::unknown;
+}
+
+// whether the open ray point + t toward, t > 0, meets the relative interior of a flat
+// polygon: it crosses the plane once, at t > 0, strictly inside every edge (ray_hidden).
+Certainly ray_meets_polygon(const ConvexPolyhedron& polygon, const Vec3d& point,
+                            const Vec3d& toward) {
+  const CGAL::Protect_FPU_rounding<true> upward;
+  const Face& face = polygon.faces().front();
+  const auto& plane = face.plane.approx();
+  const Interval at_point = value_at(plane, point);
+  const Interval slope = plane.a() * toward[0] + plane.b() * toward[1] + plane.c() * toward[2];
+  // Parallel, or the plane not ahead: no crossing at t > 0.
+  if ((slope.inf() == 0 && slope.sup() == 0) || (at_point.inf() >= 0 && slope.inf() >= 0) ||
+      (at_point.sup() <= 0 && slope.sup() <= 0))
+    return Certainly::no;
+  if (!(at_point.inf() > 0 || at_point.sup() < 0) || !(slope.inf() > 0 || slope.sup() < 0))
+    return Certainly::unknown;
+  const Interval t = -at_point / slope;
+  const Interval x[3] = {point[0] + t * toward[0], point[1] + t * toward[1],
+                         point[2] + t * toward[2]};
+  const Interval normal[3] = {plane.a(), plane.b(), plane.c()};
+  int left = 0, right = 0;
+  const std::size_t n = face.vertices.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& from = face.vertices[k].approx();
+    const auto& to = face.vertices[(k + 1) % n].approx();
+    const Interval edge[3] = {to.x() - from.x(), to.y() - from.y(), to.z() - from.z()};
+    const Interval offset[3] = {x[0] - from.x(), x[1] - from.y(), x[2] - from.z()};
+    // (edge x normal) . offset: the side of x from the edge line, within the plane.
+    const Interval side = (edge[1] * normal[2] - edge[2] * normal[1]) * offset[0] +
+                          (edge[2] * normal[0] - edge[0] * normal[2]) * offset[1] +
+                          (edge[0] * normal[1] - edge[1] * normal[0]) * offset[2];
+    left += side.sup() < 0;
+    right += side.inf() > 0;
+  }
+  if (left > 0 && right > 0) return Certainly::no;
+  if (left == static_cast<int>(n) || right == static_cast<int>(n)) return Certainly::yes;
+  return Certainly::unknown;
+}
+
+// === Occluders
 
 struct Occluder {
   const ConvexPolyhedron* solid;
   Box box;
-  std::array<Point3, 8> corners;  // of the box, exact
 };
 
-std::array<Point3, 8> corners_of(const Box& box) {
-  std::array<Point3, 8> corners;
-  for (int k = 0; k < 8; ++k)
-    corners[k] = Point3((k & 1) ? box.high[0] : box.low[0], (k & 2) ? box.high[1] : box.low[1],
-                        (k & 4) ? box.high[2] : box.low[2]);
-  return corners;
+using IntervalVector = std::array<Interval, 3>;
+
+IntervalVector cross(const IntervalVector& a, const IntervalVector& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-// true when the box lies strictly on one side of the plane through p, a, b: then it
-// cannot meet any segment from p to the source a b, which all lie in that plane. False
-// when p, a, b are collinear.
-bool beside_plane(const std::array<Point3, 8>& corners, const Point3& p, const Point3& a,
-                  const Point3& b) {
-  const CGAL::Orientation first = CGAL::orientation(p, a, b, corners[0]);
-  if (first == CGAL::COPLANAR) return false;
-  for (int k = 1; k < 8; ++k)
-    if (CGAL::orientation(p, a, b, corners[k]) != first) return false;
-  return true;
+// true when intervals certify that no open segment from point to a point of the source
+// a b meets the occluder's interior (a flat polygon's relative interior), by a separating
+// axis of the closed triangle (point, a, b) and the occluder: one of the occluder's face
+// normals (the triangle on the closed outer side of the face; strictly for a flat
+// polygon, whose relative interior lies on its plane), or, against the occluder's box,
+// the triangle's normal and the cross products of its edges with x, y and z
+// (Akenine-Moller's triangle-box test). Touching projections separate: the interior
+// projects to an open interval.
+bool misses_triangle(const Occluder& occluder, const Vec3d& point, const Vec3d& a, const Vec3d& b) {
+  const CGAL::Protect_FPU_rounding<true> upward;
+  const ConvexPolyhedron& solid = *occluder.solid;
+  for (const Face& face : solid.faces()) {
+    const auto& plane = face.plane.approx();
+    const Interval at_point = value_at(plane, point), at_a = value_at(plane, a),
+                   at_b = value_at(plane, b);
+    if (solid.is_flat() ? at_point.inf() > 0 && at_a.inf() > 0 && at_b.inf() > 0
+                        : at_point.inf() >= 0 && at_a.inf() >= 0 && at_b.inf() >= 0)
+      return true;
+  }
+  // Against the box, relative to point: the triangle is (0, to_a, to_b).
+  IntervalVector to_a, to_b, centre, half;
+  for (int i = 0; i < 3; ++i) {
+    to_a[i] = Interval(a[i]) - point[i];
+    to_b[i] = Interval(b[i]) - point[i];
+    centre[i] = (Interval(occluder.box.low[i]) + occluder.box.high[i]) / 2 - point[i];
+    half[i] = (Interval(occluder.box.high[i]) - occluder.box.low[i]) / 2;
+  }
+  const auto separates = [&](const IntervalVector& axis) {
+    const Interval along_a = axis[0] * to_a[0] + axis[1] * to_a[1] + axis[2] * to_a[2];
+    const Interval along_b = axis[0] * to_b[0] + axis[1] * to_b[1] + axis[2] * to_b[2];
+    const Interval middle = axis[0] * centre[0] + axis[1] * centre[1] + axis[2] * centre[2];
+    const Interval radius =
+        CGAL::abs(axis[0]) * half[0] + CGAL::abs(axis[1]) * half[1] + CGAL::abs(axis[2]) * half[2];
+    const double box_low = (middle - radius).inf(), box_high = (middle + radius).sup();
+    const double triangle_low = std::min({0.0, along_a.inf(), along_b.inf()});
+    const double triangle_high = std::max({0.0, along_a.sup(), along_b.sup()});
+    // A zero axis (parallel edges, a degenerate triangle) separates nothing.
+    const bool zero = std::all_of(axis.begin(), axis.end(),
+                                  [](const Interval& c) { return c.inf() <= 0 && c.sup() >= 0; });
+    return !zero && (solid.is_flat() ? triangle_high < box_low || box_high < triangle_low
+                                     : triangle_high <= box_low || box_high <= triangle_low);
+  };
+  if (separates(cross(to_a, to_b))) return true;
+  const IntervalVector source{to_b[0] - to_a[0], to_b[1] - to_a[1], to_b[2] - to_a[2]};
+  for (int i = 0; i < 3; ++i) {
+    IntervalVector unit{Interval(0), Interval(0), Interval(0)};
+    unit[i] = Interval(1);
+    for (const IntervalVector* edge : std::array<const IntervalVector*, 3>{&to_a, &to_b, &source})
+      if (separates(cross(*edge, unit))) return true;
+  }
+  return false;
 }
+
+// === Per-light data cached by the solver
 
 struct CachedPoint {
   Point3 position;
@@ -114,6 +288,35 @@ struct CachedDirectional {
 
 using CachedLight = std::variant<CachedPoint, CachedLinear, CachedDirectional>;
 
+// The occluders one query tests: every object (nullptr) or a caller's subset of them.
+using OccluderSubset = const std::vector<std::size_t>*;
+
+// calls stop(k) for each occluder k to test, in order, until it returns true; returns
+// whether one did.
+template <class Stop>
+bool any_occluder(std::size_t count, OccluderSubset subset, Stop&& stop) {
+  if (subset) return std::any_of(subset->begin(), subset->end(), stop);
+  for (std::size_t k = 0; k < count; ++k)
+    if (stop(k)) return true;
+  return false;
+}
+
+// The receiving point of one query: the doubles given, and the exact point they denote,
+// built only when a filter leaves a question to the exact test.
+class QueryPoint {
+ public:
+  explicit QueryPoint(const Vec3d& point) : point_(point) {}
+  const Vec3d& doubles() const { return point_; }
+  const Point3& exact() const {
+    if (!exact_) exact_ = to_exact(point_);
+    return *exact_;
+  }
+
+ private:
+  Vec3d point_;
+  mutable std::optional<Point3> exact_;
+};
+
 }  // namespace
 
 struct IlluminanceSolver::Impl {
@@ -122,23 +325,27 @@ struct IlluminanceSolver::Impl {
   std::vector<Occluder> occluders;
   std::vector<CachedLight> cached;
 
-  double point_light(const CachedPoint& lamp, const Vec3d& point, const Vec3d& normal) const;
-  double directional_light(const CachedDirectional& sun, const Vec3d& point,
-                           const Vec3d& normal) const;
-  std::vector<ExactInterval> linear_visible(const CachedLinear& tube, const Vec3d& point,
-                                            const Vec3d& normal) const;
-  double linear_light(const CachedLinear& tube, const Vec3d& point, const Vec3d& normal) const;
-  double light_at(std::size_t light, const Vec3d& point, const Vec3d& normal) const;
+  double point_light(const CachedPoint& lamp, const QueryPoint& point, const Vec3d& normal,
+                     OccluderSubset subset) const;
+  double directional_light(const CachedDirectional& sun, const QueryPoint& point,
+                           const Vec3d& normal, OccluderSubset subset) const;
+  std::vector<ExactInterval> linear_visible(const CachedLinear& tube, const QueryPoint& point,
+                                            const Vec3d& normal, OccluderSubset subset) const;
+  double linear_light(const CachedLinear& tube, const QueryPoint& point, const Vec3d& normal,
+                      OccluderSubset subset) const;
+  double light_at(std::size_t light, const QueryPoint& point, const Vec3d& normal,
+                  OccluderSubset subset) const;
+  std::optional<std::size_t> containing_object(const QueryPoint& point) const;
+  PointIlluminance at(const Vec3d& point, const Vec3d& normal,
+                      const std::vector<std::vector<std::size_t>>* subsets) const;
 };
 
 IlluminanceSolver::IlluminanceSolver(const Scene& scene) {
   auto impl = std::make_shared<Impl>();
   impl->objects = scene.objects;
   impl->lights = scene.lights;
-  for (const Object& object : impl->objects) {
-    const Box box = box_of(object.solid.bbox());
-    impl->occluders.push_back({&object.solid, box, corners_of(box)});
-  }
+  for (const Object& object : impl->objects)
+    impl->occluders.push_back({&object.solid, box_of(object.solid.bbox())});
   for (const Light& light : impl->lights) {
     if (const auto* point = std::get_if<PointLight>(&light.source)) {
       CachedPoint lamp{to_exact(point->position), point, {}};
@@ -161,66 +368,105 @@ std::size_t IlluminanceSolver::light_count() const {
   return impl_->lights.size();
 }
 
-double IlluminanceSolver::Impl::point_light(const CachedPoint& lamp, const Vec3d& point,
-                                            const Vec3d& normal) const {
-  const Point3 receiver = to_exact(point);
+double IlluminanceSolver::Impl::point_light(const CachedPoint& lamp, const QueryPoint& point,
+                                            const Vec3d& normal, OccluderSubset subset) const {
   // Eq. (2)'s tie-break, exactly: the lamp strictly on the outer side of the receiving plane.
-  if (!CGAL::is_positive(to_exact_vector(normal) * (lamp.position - receiver))) return 0;
-  const Box segment = box_of({&point, &lamp.light->position});
-  for (std::size_t k = 0; k < occluders.size(); ++k) {
-    if (lamp.hidden[k].empty() || !overlap(occluders[k].box, segment)) continue;
-    // The region hidden from the lamp by occluder k holds exactly the points whose open
-    // segment to the lamp meets the occluder (the relation is symmetric).
-    if (lamp.hidden[k].contains(receiver)) return 0;
-  }
   const PointLight& light = *lamp.light;
-  return point_illuminance(point, normal, light.position, [&](const Vec3d& direction) {
+  const Certainly facing = outer_side(normal, light.position, point.doubles());
+  if (facing == Certainly::no) return 0;
+  if (facing == Certainly::unknown &&
+      !CGAL::is_positive(to_exact_vector(normal) * (lamp.position - point.exact())))
+    return 0;
+  const Box segment = box_of({&point.doubles(), &light.position});
+  // The region hidden from the lamp by occluder k holds exactly the points whose open
+  // segment to the lamp meets the occluder (the relation is symmetric).
+  if (any_occluder(occluders.size(), subset, [&](std::size_t k) {
+        const HiddenRegion& hidden = lamp.hidden[k];
+        if (hidden.empty() || !overlap(occluders[k].box, segment)) return false;
+        if (hidden.everywhere) return true;
+        const Certainly inside = inside_open_volume(hidden.volume.planes, point.doubles());
+        return inside == Certainly::unknown ? hidden.contains(point.exact())
+                                            : inside == Certainly::yes;
+      }))
+    return 0;
+  return point_illuminance(point.doubles(), normal, light.position, [&](const Vec3d& direction) {
     return photometry::intensity_toward(*light.distribution, light.axis, light.c0, direction);
   });
 }
 
-double IlluminanceSolver::Impl::directional_light(const CachedDirectional& sun, const Vec3d& point,
-                                                  const Vec3d& normal) const {
-  if (!CGAL::is_positive(to_exact_vector(normal) * sun.toward_sun)) return 0;
-  const Point3 receiver = to_exact(point);
-  for (const Occluder& occluder : occluders)
-    if (ray_may_meet(occluder.box, point, sun.toward_sun_double) &&
-        ray_hidden(*occluder.solid, receiver, sun.toward_sun))
-      return 0;
+double IlluminanceSolver::Impl::directional_light(const CachedDirectional& sun,
+                                                  const QueryPoint& point, const Vec3d& normal,
+                                                  OccluderSubset subset) const {
+  const Vec3d origin{0, 0, 0};
+  const Certainly facing = outer_side(normal, sun.toward_sun_double, origin);
+  if (facing == Certainly::no) return 0;
+  if (facing == Certainly::unknown && !CGAL::is_positive(to_exact_vector(normal) * sun.toward_sun))
+    return 0;
+  if (any_occluder(occluders.size(), subset, [&](std::size_t k) {
+        const Occluder& occluder = occluders[k];
+        if (!ray_may_meet(occluder.box, point.doubles(), sun.toward_sun_double)) return false;
+        const Certainly meets =
+            occluder.solid->is_flat()
+                ? ray_meets_polygon(*occluder.solid, point.doubles(), sun.toward_sun_double)
+                : ray_meets_solid(*occluder.solid, point.doubles(), sun.toward_sun_double);
+        return meets == Certainly::unknown
+                   ? ray_hidden(*occluder.solid, point.exact(), sun.toward_sun)
+                   : meets == Certainly::yes;
+      }))
+    return 0;
   return directional_illuminance(normal, sun.light->direction, sun.light->illuminance);
 }
 
 std::vector<ExactInterval> IlluminanceSolver::Impl::linear_visible(const CachedLinear& tube,
-                                                                   const Vec3d& point,
-                                                                   const Vec3d& normal) const {
-  const Point3 receiver = to_exact(point);
+                                                                   const QueryPoint& point,
+                                                                   const Vec3d& normal,
+                                                                   OccluderSubset subset) const {
+  const LinearLight& light = *tube.light;
   // Fig. 7, S3: only the part strictly on the outer side of the receiving plane can light P.
-  const auto outer =
-      outer_side_interval_exact(receiver, to_exact_vector(normal), tube.start, tube.end);
+  std::optional<ExactInterval> outer;
+  const Certainly start_out = outer_side(normal, light.start, point.doubles());
+  const Certainly end_out = outer_side(normal, light.end, point.doubles());
+  const bool whole_source = start_out == Certainly::yes && end_out == Certainly::yes;
+  if (whole_source)
+    outer = ExactInterval{0, 1};
+  else if (start_out == Certainly::no && end_out == Certainly::no)
+    return {};
+  else
+    outer = outer_side_interval_exact(point.exact(), to_exact_vector(normal), tube.start, tube.end);
   if (!outer) return {};
   // Section 4.2.3: each occluder near the triangle (P, Q1, Q2) hides an open sub-segment,
   // the source clipped by the pyramid from P through its contour. Occluders whose boxes
-  // miss the triangle's box or lie wholly on one side of its plane are skipped first.
-  const Box triangle = box_of({&point, &tube.light->start, &tube.light->end});
+  // miss the triangle's box, or that the triangle certainly misses, are skipped first.
+  const Box triangle = box_of({&point.doubles(), &light.start, &light.end});
   std::vector<ExactInterval> hidden;
-  for (const Occluder& occluder : occluders) {
+  const bool umbra = any_occluder(occluders.size(), subset, [&](std::size_t k) {
+    const Occluder& occluder = occluders[k];
     if (!overlap(occluder.box, triangle) ||
-        beside_plane(occluder.corners, receiver, tube.start, tube.end))
-      continue;
-    const HiddenRegion region = hidden_region(*occluder.solid, receiver);
-    if (region.empty()) continue;
+        misses_triangle(occluder, point.doubles(), light.start, light.end))
+      return false;
+    // The points of the source hidden by one convex occluder form an interval (the cone
+    // from P over its interior is convex), so when the outer part is the whole source and
+    // the occluder certainly hides both ends, it hides all of it: umbra.
+    if (whole_source && !occluder.solid->is_flat() &&
+        ray_meets_solid(*occluder.solid, point.doubles(), {}, &light.start) == Certainly::yes &&
+        ray_meets_solid(*occluder.solid, point.doubles(), {}, &light.end) == Certainly::yes)
+      return true;
+    const HiddenRegion region = hidden_region(*occluder.solid, point.exact());
+    if (region.empty()) return false;
     const auto blocked = hidden_interval(region, tube.start, tube.end);
-    if (!blocked) continue;
+    if (!blocked) return false;
     // One occluder hides the whole outer part: umbra.
-    if (!(outer->low < blocked->low) && !(blocked->high < outer->high)) return {};
+    if (!(outer->low < blocked->low) && !(blocked->high < outer->high)) return true;
     hidden.push_back(*blocked);
-  }
+    return false;
+  });
+  if (umbra) return {};
   return visible_intervals(*outer, std::move(hidden));
 }
 
-double IlluminanceSolver::Impl::linear_light(const CachedLinear& tube, const Vec3d& point,
-                                             const Vec3d& normal) const {
-  const std::vector<ExactInterval> visible = linear_visible(tube, point, normal);
+double IlluminanceSolver::Impl::linear_light(const CachedLinear& tube, const QueryPoint& point,
+                                             const Vec3d& normal, OccluderSubset subset) const {
+  const std::vector<ExactInterval> visible = linear_visible(tube, point, normal, subset);
   if (visible.empty()) return 0;
   // The exact interval ends become doubles only here, to integrate the closed form.
   std::vector<SourceInterval> parts;
@@ -228,56 +474,85 @@ double IlluminanceSolver::Impl::linear_light(const CachedLinear& tube, const Vec
   for (const ExactInterval& part : visible)
     parts.emplace_back(CGAL::to_double(part.low), CGAL::to_double(part.high));
   const LinearLight& light = *tube.light;
-  return linear_illuminance(point, normal, light.start, light.end, light.candela_per_metre, parts);
+  return linear_illuminance(point.doubles(), normal, light.start, light.end,
+                            light.candela_per_metre, parts);
 }
 
-double IlluminanceSolver::Impl::light_at(std::size_t light, const Vec3d& point,
-                                         const Vec3d& normal) const {
+double IlluminanceSolver::Impl::light_at(std::size_t light, const QueryPoint& point,
+                                         const Vec3d& normal, OccluderSubset subset) const {
   return std::visit(
       [&](const auto& cached_light) -> double {
         using T = std::decay_t<decltype(cached_light)>;
         if constexpr (std::is_same_v<T, CachedPoint>)
-          return point_light(cached_light, point, normal);
+          return point_light(cached_light, point, normal, subset);
         else if constexpr (std::is_same_v<T, CachedLinear>)
-          return linear_light(cached_light, point, normal);
+          return linear_light(cached_light, point, normal, subset);
         else
-          return directional_light(cached_light, point, normal);
+          return directional_light(cached_light, point, normal, subset);
       },
       cached.at(light));
 }
 
+std::optional<std::size_t> IlluminanceSolver::Impl::containing_object(
+    const QueryPoint& point) const {
+  for (std::size_t k = 0; k < occluders.size(); ++k) {
+    const ConvexPolyhedron& solid = *occluders[k].solid;
+    // A flat polygon has no interior.
+    if (solid.is_flat() || !overlap(occluders[k].box, box_of({&point.doubles()}))) continue;
+    const Certainly inside = inside_solid(solid, point.doubles());
+    if (inside == Certainly::yes || (inside == Certainly::unknown &&
+                                     solid.bounded_side(point.exact()) == CGAL::ON_BOUNDED_SIDE))
+      return k;
+  }
+  return std::nullopt;
+}
+
+PointIlluminance IlluminanceSolver::Impl::at(
+    const Vec3d& point, const Vec3d& normal,
+    const std::vector<std::vector<std::size_t>>* subsets) const {
+  const QueryPoint receiver(point);
+  PointIlluminance result;
+  result.inside = containing_object(receiver);
+  result.per_light.assign(lights.size(), 0.0);
+  if (result.inside) return result;
+  for (std::size_t light = 0; light < lights.size(); ++light) {
+    result.per_light[light] =
+        light_at(light, receiver, normal, subsets ? &(*subsets)[light] : nullptr);
+    result.total += result.per_light[light];
+  }
+  return result;
+}
+
 double IlluminanceSolver::light_at(std::size_t light, const Vec3d& point,
                                    const Vec3d& normal) const {
-  return impl_->light_at(light, point, normal);
+  return impl_->light_at(light, QueryPoint(point), normal, nullptr);
 }
 
 std::vector<ExactInterval> IlluminanceSolver::visible_parts(std::size_t light, const Vec3d& point,
                                                             const Vec3d& normal) const {
   const auto* tube = std::get_if<CachedLinear>(&impl_->cached.at(light));
   if (!tube) throw std::invalid_argument("visible_parts: light is not linear");
-  return impl_->linear_visible(*tube, point, normal);
+  return impl_->linear_visible(*tube, QueryPoint(point), normal, nullptr);
 }
 
 std::optional<std::size_t> IlluminanceSolver::containing_object(const Vec3d& point) const {
-  const Point3 exact = to_exact(point);
-  for (std::size_t k = 0; k < impl_->occluders.size(); ++k) {
-    const Box& box = impl_->occluders[k].box;
-    if (!overlap(box, box_of({&point}))) continue;
-    if (impl_->occluders[k].solid->bounded_side(exact) == CGAL::ON_BOUNDED_SIDE) return k;
-  }
-  return std::nullopt;
+  return impl_->containing_object(QueryPoint(point));
 }
 
 PointIlluminance IlluminanceSolver::at(const Vec3d& point, const Vec3d& normal) const {
-  PointIlluminance result;
-  result.inside = containing_object(point);
-  result.per_light.assign(impl_->lights.size(), 0.0);
-  if (result.inside) return result;
-  for (std::size_t light = 0; light < impl_->lights.size(); ++light) {
-    result.per_light[light] = impl_->light_at(light, point, normal);
-    result.total += result.per_light[light];
-  }
-  return result;
+  return impl_->at(point, normal, nullptr);
+}
+
+PointIlluminance IlluminanceSolver::at(
+    const Vec3d& point, const Vec3d& normal,
+    const std::vector<std::vector<std::size_t>>& occluders) const {
+  if (occluders.size() != impl_->lights.size())
+    throw std::invalid_argument("IlluminanceSolver::at: one occluder list per light expected");
+  for (const auto& list : occluders)
+    for (std::size_t k : list)
+      if (k >= impl_->occluders.size())
+        throw std::invalid_argument("IlluminanceSolver::at: no object " + std::to_string(k));
+  return impl_->at(point, normal, &occluders);
 }
 
 PointIlluminance illuminance_at(const Scene& scene, const Vec3d& point, const Vec3d& normal) {

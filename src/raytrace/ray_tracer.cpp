@@ -6,6 +6,7 @@
 #include "penumbra/photometry/orientation.h"
 #include "penumbra/raytrace/optics.h"
 #include "penumbra/raytrace/tube_sampling.h"
+#include "penumbra/raytrace/tube_visibility.h"
 #include "penumbra/scene/scene.h"
 #include "random.h"
 #include "vector3.h"
@@ -32,6 +33,7 @@ struct RayTracer::Impl {
   const Scene& scene;
   EmbreeScene embree;
   TraceOptions options;
+  TubeVisibility tubes;
   bool any_transparent = false;
   // Secondary rays start at the exact hit point but ignore hits closer than this (m):
   // Embree traverses in single precision, so a ray leaving the surface could find the
@@ -40,7 +42,10 @@ struct RayTracer::Impl {
   double offset;
 
   Impl(const Scene& scene_in, TraceOptions options_in)
-      : scene(scene_in), embree(scene_in), options(options_in) {
+      : scene(scene_in),
+        embree(scene_in),
+        options(options_in),
+        tubes(scene_in, options_in.min_weight) {
     for (const Object& object : scene.objects)
       if (scene.materials[object.material].transmit > 0) any_transparent = true;
     offset = 1e-5 * embree.scale();
@@ -91,7 +96,14 @@ struct RayTracer::Impl {
     // to_light, with cos_alpha = N . to_light > 0.
     void add(double e_normal, double cos_alpha, const Vec3& to_light) {
       illuminance += e_normal * cos_alpha;
-      if (!material || material->specular <= 0) return;
+      add_highlight(e_normal, cos_alpha, to_light);
+    }
+
+    bool has_highlights() const { return material && material->specular > 0; }
+
+    // adds Phong's term only.
+    void add_highlight(double e_normal, double cos_alpha, const Vec3& to_light) {
+      if (!has_highlights()) return;
       const Vec3 mirror = 2 * cos_alpha * normal - to_light;
       const double cos_psi = dot(mirror, to_viewer);
       if (cos_psi > 0)
@@ -99,12 +111,16 @@ struct RayTracer::Impl {
     }
   };
 
-  void gather(const Vec3& point, DirectLight& light, Random& random, RayCounts& counts) const {
+  // surface: the object the point lies on (its own tube occlusion is decided by convexity,
+  // tube_visibility.h), {} for a free point.
+  void gather(const Vec3& point, const std::optional<ShadedSurface>& surface, DirectLight& light,
+              Random& random, RayCounts& counts) const {
     const Vec3& normal = light.normal;
     const Vec3& origin = point;
     // shadow_passed < 0: cast the shadow ray here; otherwise the caller already did.
+    // highlight_only: the diffuse part is counted elsewhere.
     const auto from_point_light = [&](const Vec3& position, auto&& intensity_toward,
-                                      double shadow_passed) {
+                                      double shadow_passed, bool highlight_only = false) {
       const Vec3 to_light = position - point;
       const double r2 = dot(to_light, to_light);
       const double distance = std::sqrt(r2);
@@ -116,9 +132,14 @@ struct RayTracer::Impl {
       if (candela <= 0) return;
       const double passed =
           shadow_passed >= 0 ? shadow_passed : transmittance(origin, direction, distance, counts);
-      if (passed > 0) light.add(candela * passed / r2, cos_alpha, direction);
+      if (passed <= 0) return;
+      if (highlight_only)
+        light.add_highlight(candela * passed / r2, cos_alpha, direction);
+      else
+        light.add(candela * passed / r2, cos_alpha, direction);
     };
-    for (const Light& source : scene.lights) {
+    for (std::size_t index = 0; index < scene.lights.size(); ++index) {
+      const Light& source = scene.lights[index];
       if (const auto* lamp = std::get_if<PointLight>(&source.source)) {
         from_point_light(
             lamp->position,
@@ -134,16 +155,17 @@ struct RayTracer::Impl {
         const double passed = transmittance(origin, direction, kInfinity, counts);
         if (passed > 0) light.add(sun->illuminance * passed, cos_alpha, direction);
       } else if (const auto* tube = std::get_if<LinearLight>(&source.source)) {
-        const auto elements = sample_tube_stratified(
-            *tube, point, options.tube_samples, random.next(), [&](const Vec3& position) {
-              const Vec3 to_element = position - point;
-              if (dot(normal, to_element) <= 0) return 0.0;
-              const double distance = length(to_element);
-              return transmittance(origin, (1 / distance) * to_element, distance, counts);
-            });
-        for (const SourceElement& element : elements)
+        // Nishita 1985 section 4.2.3: the closed form over the exactly visible pieces, each
+        // scaled by what transparent occluders pass (no shadow rays).
+        const std::vector<TubePiece> pieces = tubes.pieces(index, point, normal, surface);
+        light.illuminance += tube_illuminance(*tube, point, normal, pieces);
+        // Phong's highlight has no closed form: stratified elements within the pieces.
+        const std::uint64_t seed = random.next();
+        if (!light.has_highlights()) continue;
+        for (const SourceElement& element :
+             sample_tube_stratified(*tube, point, pieces, options.tube_samples, seed))
           from_point_light(
-              element.position, [&](const Vec3&) { return element.candela; }, 1);
+              element.position, [&](const Vec3&) { return element.candela; }, 1, true);
       }
     }
   }
@@ -185,7 +207,8 @@ struct RayTracer::Impl {
     const FacingSurface surface = face_the_ray(direction, hit->normal, material.ior);
     const Vec3 to_viewer = -direction;
     DirectLight light{surface.normal, to_viewer, &material};
-    gather(hit->point, light, random, counts);
+    const bool inside = dot(surface.normal, hit->normal) < 0;
+    gather(hit->point, ShadedSurface{hit->object, inside}, light, random, counts);
     const double diffuse = material.reflectance * light.illuminance / M_PI;
     for (int c = 0; c < 3; ++c) result.radiance[c] = diffuse * material.color[c] + light.specular;
 
@@ -251,7 +274,7 @@ double RayTracer::illuminance(const Vec3d& point, const Vec3d& normal, std::uint
   Random random(mix_bits(impl_->options.seed ^ sample_key));
   const Vec3 unit = normalized(normal);
   Impl::DirectLight light{unit, unit, nullptr};
-  impl_->gather(point, light, random, counts);
+  impl_->gather(point, std::nullopt, light, random, counts);
   return light.illuminance;
 }
 

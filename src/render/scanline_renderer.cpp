@@ -33,6 +33,20 @@ void append_boundary(const Region2& region, const FaceFrame& frame, std::vector<
   }
 }
 
+// returns the objects casting a shadow on the face in map, largest shadow first (the
+// likeliest blocker of a point of the face is tested first).
+std::vector<std::size_t> shadowing_objects(const FaceShadow& map) {
+  std::vector<std::pair<double, std::size_t>> by_area;
+  for (const OccluderShadow& shadow : map.occluders)
+    by_area.emplace_back(CGAL::to_double(signed_area(shadow.polygon)), shadow.occluder);
+  std::sort(by_area.begin(), by_area.end(), [](const auto& a, const auto& b) {
+    return a.first > b.first || (a.first == b.first && a.second < b.second);
+  });
+  std::vector<std::size_t> objects;
+  for (const auto& entry : by_area) objects.push_back(entry.second);
+  return objects;
+}
+
 }  // namespace
 
 struct ScanlineRenderer::Impl {
@@ -43,7 +57,9 @@ struct ScanlineRenderer::Impl {
   illuminance::IlluminanceSolver solver;
   std::vector<std::size_t> first_face;           // per object: its first receiver slot
   std::vector<std::vector<Segment>> boundaries;  // per receiver slot: shadow boundaries
-  std::vector<FacePlane> planes;                 // per receiver slot
+  // per receiver slot, per light: the only objects that can block the light from the face
+  std::vector<std::vector<std::vector<std::size_t>>> occluders;
+  std::vector<FacePlane> planes;  // per receiver slot
   bool parallel;
 
   Impl(const Scene& scene_in, const Camera& camera, bool parallel_in)
@@ -59,6 +75,7 @@ struct ScanlineRenderer::Impl {
       slots += object.solid.faces().size();
     }
     boundaries.resize(slots);
+    occluders.assign(slots, std::vector<std::vector<std::size_t>>(scene_in.lights.size()));
     for (std::size_t object = 0; object < scene_in.objects.size(); ++object)
       for (const Face& face : scene_in.objects[object].solid.faces())
         planes.push_back(face_plane(face));
@@ -74,9 +91,16 @@ struct ScanlineRenderer::Impl {
       for (std::size_t r = 0; r < shadows.receivers.size(); ++r) {
         const Receiver& receiver = shadows.receivers[r];
         const FaceShadow& map = light.faces[r];
-        if (map.faces_away || map.beyond_range) continue;
+        const std::size_t face_slot = first_face[receiver.object] + receiver.face;
+        if (map.beyond_range) throw std::logic_error("render: shadows culled by range");
+        // The objects whose shadow (penumbra or umbra) meets the face are the only ones
+        // that can hide any part of the light from a point of it: the solver tests just
+        // those (none on a wholly lit face). A face turned away keeps none: the solver's
+        // outer-side test gives 0 before any occluder is looked at.
+        occluders[face_slot][light.light] = shadowing_objects(map);
+        if (map.faces_away) continue;
         const Face& face = scene_in.objects[receiver.object].solid.faces()[receiver.face];
-        std::vector<Segment>& out = boundaries[first_face[receiver.object] + receiver.face];
+        std::vector<Segment>& out = boundaries[face_slot];
         append_boundary(map.shadow, face.frame, out);
         if (map.linear) append_boundary(map.umbra, face.frame, out);
       }
@@ -103,7 +127,10 @@ struct ScanlineRenderer::Impl {
 
   double evaluate(int i, int j) const {
     const auto at = point(i, j);
-    return solver.at((*at)[0], (*at)[1]).total;
+    const std::size_t pixel = visibility.index(i, j);
+    return solver
+        .at((*at)[0], (*at)[1], occluders[slot(visibility.objects[pixel], visibility.faces[pixel])])
+        .total;
   }
 
   // Nishita 1985 section 3.3: shades row j; returns (evaluations, crossings).

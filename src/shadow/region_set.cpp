@@ -26,11 +26,7 @@ Ring2 to_ring(const Polygon& polygon) {
   return canonical_ring(Ring2(polygon.vertices_begin(), polygon.vertices_end()));
 }
 
-}  // namespace
-
-Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& subtract) {
-  PolygonSet set = join(rings);
-  if (!subtract.empty()) set.difference(join(subtract));
+Region2 region_of(const PolygonSet& set) {
   std::vector<PolygonWithHoles> parts;
   set.polygons_with_holes(std::back_inserter(parts));
   std::vector<Polygon2> polygons;
@@ -41,6 +37,22 @@ Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& s
     polygons.push_back(std::move(polygon));
   }
   return canonical_region(std::move(polygons));
+}
+
+}  // namespace
+
+Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& subtract) {
+  PolygonSet set = join(rings);
+  if (!subtract.empty()) set.difference(join(subtract));
+  return region_of(set);
+}
+
+std::pair<Region2, Region2> unite_and_complement(const std::vector<Ring2>& rings,
+                                                 const Ring2& window) {
+  const PolygonSet shadow = join(rings);
+  PolygonSet rest = join({window});
+  rest.difference(shadow);
+  return {rings.size() == 1 ? convex_region(rings.front()) : region_of(shadow), region_of(rest)};
 }
 
 bool interiors_overlap(const Ring2& a, const Ring2& b) {

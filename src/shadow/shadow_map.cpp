@@ -10,6 +10,7 @@
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/shadow_polygon.h"
 #include "penumbra/visibility/lighting_sphere.h"
+#include "receiver_clip.h"
 
 namespace penumbra {
 namespace {
@@ -125,11 +126,18 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
 
   auto shade = [&](std::size_t a) {
     const Face& face = scene.objects[active[a].object].solid.faces()[active[a].face];
+    if (candidates[a].empty()) {
+      result.faces[active_index[a]] = unite_shadows(face, {});
+      return;
+    }
+    // The face's ring and frame, exact and in intervals, once for all its occluders.
+    const detail::ReceiverClip receiver(face);
     std::vector<OccluderShadow> shadows;
     for (std::size_t occluder : candidates[a])
-      if (auto polygon = shadow_polygon(scene.objects[occluder].solid, volumes[occluder], face))
+      if (auto polygon =
+              detail::shadow_polygon(scene.objects[occluder].solid, volumes[occluder], receiver))
         shadows.push_back({occluder, std::move(*polygon)});
-    result.faces[active_index[a]] = unite_shadows(face, std::move(shadows));
+    result.faces[active_index[a]] = unite_shadows(receiver.ring(), std::move(shadows));
   };
   for_each_receiver(active.size(), options.parallel, shade);
 

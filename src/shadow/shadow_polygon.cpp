@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "half_plane.h"
-#include "penumbra/shadow/face_shadow.h"
+#include "receiver_clip.h"
 
 namespace penumbra {
 
@@ -41,20 +40,26 @@ std::vector<Plane3> shadow_volume(const ConvexPolyhedron& occluder, const LightP
   return planes;
 }
 
+namespace detail {
+
 std::optional<Ring2> shadow_polygon(const ConvexPolyhedron& occluder,
-                                    const std::vector<Plane3>& volume, const Face& receiver) {
+                                    const std::vector<Plane3>& volume,
+                                    const ReceiverClip& receiver) {
   // Only the part of V strictly in front of the face's plane can block a segment
   // from the face to the source (docs/shadows.md, "the slab"): quick rejection.
+  const Plane3& plane = receiver.face().plane;
   if (std::none_of(occluder.vertices().begin(), occluder.vertices().end(), [&](const Point3& p) {
-        return receiver.plane.oriented_side(p) == CGAL::ON_POSITIVE_SIDE;
+        return plane.oriented_side(p) == CGAL::ON_POSITIVE_SIDE;
       }))
     return std::nullopt;
-  Ring2 ring = face_ring(receiver);
-  for (const Plane3& plane : volume) {
-    ring = detail::clip(ring, detail::restrict_to(plane, receiver.frame));
-    if (ring.size() < 3) return std::nullopt;
-  }
-  return detail::ring_with_area(ring);
+  return receiver.clip(volume);
+}
+
+}  // namespace detail
+
+std::optional<Ring2> shadow_polygon(const ConvexPolyhedron& occluder,
+                                    const std::vector<Plane3>& volume, const Face& receiver) {
+  return detail::shadow_polygon(occluder, volume, detail::ReceiverClip(receiver));
 }
 
 std::optional<Ring2> shadow_polygon(const ConvexPolyhedron& occluder, const Face& receiver,

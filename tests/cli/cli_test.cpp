@@ -63,10 +63,4 @@ BOOST_AUTO_TEST_CASE(bad_scene_reports_file_and_path_and_exits_2) {
                scene.string() + ": lights[0].linear: a linear source must not have zero length"));
 }
 
-BOOST_AUTO_TEST_CASE(unbuilt_verbs_say_so_and_exit_2) {
-  const auto result = run_penumbra("radiosity fixtures/scenes/every-kind.json -o x.csv");
-  BOOST_TEST(result.status == 2);
-  BOOST_TEST(contains(result.err, "not built yet"));
-}
-
 BOOST_AUTO_TEST_SUITE_END()

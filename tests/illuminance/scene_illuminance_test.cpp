@@ -1,6 +1,8 @@
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -9,6 +11,7 @@
 #include "penumbra/illuminance/scene_illuminance.h"
 #include "penumbra/scene/load_scene.h"
 #include "penumbra/shadow/linear_volumes.h"
+#include "penumbra/shadow/shadow_map.h"
 #include "reference_quadrature.h"
 #include "support/fixtures.h"
 
@@ -320,6 +323,139 @@ BOOST_AUTO_TEST_CASE(flux_is_conserved_in_a_closed_room_with_an_occluder) {
   BOOST_TEST(cube > 0.01 * emitted);  // the cube does intercept a noticeable share
   BOOST_TEST(close(room + cube, emitted, 1e-3),
              "room " << room << " + cube " << cube << " vs " << emitted);
+}
+
+// The query with known occluders (the renderer's fast path): for each face, the objects
+// whose exact shadow meets it (FaceShadow::occluders) are given as the only occluders.
+// At random points of every face, lifted 1e-9 (1 + |P|) off it as the renderer lifts
+// them, the answer equals the full query: per light within 1e-9 relative. Random weights
+// stay >= 0.02 so no point is within rounding of a face edge, where the lifted point may
+// see past the face's own shadow map (the tie class docs/illuminance.md names).
+BOOST_AUTO_TEST_CASE(occluders_from_the_shadow_maps_give_the_full_answer) {
+  std::mt19937 random(7);  // fixed: the same points on every run
+  std::uniform_real_distribution<double> weight(0.02, 1);
+  for (const char* name : {"scenes/office.json", "scenes/linear-joint.json"}) {
+    const Scene scene = load_scene(test::fixture(name));
+    const IlluminanceSolver solver(scene);
+    ShadowOptions options;
+    options.range_fraction = 0;
+    const ShadowResult shadows = compute_shadows(scene, options);
+    std::size_t compared = 0, differ = 0, shadowed = 0, lit_beside_shadow = 0, unrestricted = 0;
+    for (std::size_t r = 0; r < shadows.receivers.size(); ++r) {
+      const Receiver& receiver = shadows.receivers[r];
+      const Face& face = scene.objects[receiver.object].solid.faces()[receiver.face];
+      std::vector<std::vector<std::size_t>> occluders(scene.lights.size());
+      for (const LightShadows& light : shadows.lights)
+        for (const OccluderShadow& shadow : light.faces[r].occluders)
+          occluders[light.light].push_back(shadow.occluder);
+      const Vec3d normal =
+          to_double(face.normal() / std::sqrt(CGAL::to_double(face.normal().squared_length())));
+      for (int k = 0; k < 40; ++k) {
+        Vec3d p{0, 0, 0};
+        double total = 0;
+        for (const Point3& vertex : face.vertices) {
+          const double w = weight(random);
+          const Vec3d v = to_double(vertex);
+          for (int i = 0; i < 3; ++i) p[i] += w * v[i];
+          total += w;
+        }
+        for (int i = 0; i < 3; ++i) p[i] /= total;
+        const double lift = 1e-9 * (1 + std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])}));
+        for (int i = 0; i < 3; ++i) p[i] += lift * normal[i];
+        const PointIlluminance full = solver.at(p, normal);
+        const PointIlluminance fast = solver.at(p, normal, occluders);
+        BOOST_TEST(fast.inside.has_value() == full.inside.has_value());
+        for (std::size_t light = 0; light < scene.lights.size(); ++light) {
+          ++compared;
+          const double expected = full.per_light[light];
+          if (std::abs(fast.per_light[light] - expected) > 1e-9 * std::abs(expected)) {
+            if (++differ <= 5)
+              BOOST_TEST_MESSAGE(name << " face " << r << " light " << light << ": "
+                                      << fast.per_light[light] << " vs " << expected);
+          }
+          if (occluders[light].empty()) continue;
+          // What the lists leave out matters: without them the point is lit.
+          const double unoccluded =
+              solver.at(p, normal, std::vector<std::vector<std::size_t>>(scene.lights.size()))
+                  .per_light[light];
+          if (unoccluded > expected) {
+            ++shadowed;
+            unrestricted += fast.per_light[light] == unoccluded;
+          } else if (expected > 0) {
+            ++lit_beside_shadow;
+          }
+        }
+      }
+    }
+    BOOST_TEST_MESSAGE(name << ": " << compared << " values, " << shadowed << " shadowed, "
+                            << lit_beside_shadow << " lit on shadowed faces, " << differ
+                            << " differ");
+    BOOST_TEST(differ == 0u, name);
+    BOOST_TEST(shadowed > 10u, name);
+    BOOST_TEST(lit_beside_shadow > 10u, name);
+    BOOST_TEST(unrestricted == 0u, name);
+  }
+}
+
+// The interval filters and culls in front of the exact tests decide as the exact oracle
+// does: at random points and normals in the default scene, each point light and the sun
+// give 0 exactly when an object meets the open segment (ray), and otherwise what they
+// give with no objects at all; a random point Q(u) of the tube lies in a visible part
+// exactly when it is strictly on the outer side and no object meets the segment P Q(u).
+BOOST_AUTO_TEST_CASE(filtered_occlusion_follows_the_exact_oracle_at_random_points) {
+  const Scene scene = load_scene(test::fixture("scenes/office.json"));
+  Scene bare = scene;
+  bare.objects.clear();
+  const IlluminanceSolver solver(scene), unoccluded(bare);
+  std::mt19937 random(11);  // fixed: the same points on every run
+  std::uniform_real_distribution<double> x(0, 6), y(0, 4), z(0, 3), c(-1, 1);
+  std::uniform_real_distribution<double> along(0, 1);
+  int blocked_count = 0, seen_count = 0, tube_hidden = 0, tube_seen = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const Vec3d p{x(random), y(random), z(random)};
+    Vec3d n{c(random), c(random), c(random)};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (length < 0.1) continue;
+    for (double& component : n) component /= length;
+    if (solver.containing_object(p)) continue;
+    for (std::size_t light = 0; light < scene.lights.size(); ++light) {
+      bool blocked = false;
+      if (const auto* lamp = std::get_if<PointLight>(&scene.lights[light].source)) {
+        for (const Object& object : scene.objects)
+          blocked = blocked ||
+                    oracle_segment_blocked(object.solid, to_exact(p), to_exact(lamp->position));
+      } else if (const auto* sun = std::get_if<DirectionalLight>(&scene.lights[light].source)) {
+        const Vector3 toward = -to_exact_vector(sun->direction);
+        for (const Object& object : scene.objects)
+          blocked = blocked || oracle_meets_interior(object.solid, to_exact(p), toward, {});
+      } else {
+        if (k % 6 != 0) continue;  // the oracle is slow: 500 points, 8 source points each
+        const auto& tube = std::get<LinearLight>(scene.lights[light].source);
+        const std::vector<ExactInterval> parts = solver.visible_parts(light, p, n);
+        for (int sample = 0; sample < 8; ++sample) {
+          const Exact u(along(random));
+          const Point3 q = to_exact(tube.start) + u * (to_exact(tube.end) - to_exact(tube.start));
+          bool seen = CGAL::is_positive(to_exact_vector(n) * (q - to_exact(p)));
+          for (const Object& object : scene.objects)
+            seen = seen && !oracle_segment_blocked(object.solid, to_exact(p), q);
+          const bool in_part = std::any_of(
+              parts.begin(), parts.end(),
+              [&](const ExactInterval& part) { return part.low <= u && u <= part.high; });
+          BOOST_TEST(in_part == seen);
+          (seen ? tube_seen : tube_hidden) += 1;
+        }
+        continue;
+      }
+      const double free = unoccluded.light_at(light, p, n);
+      if (free == 0) continue;
+      BOOST_TEST(solver.light_at(light, p, n) == (blocked ? 0.0 : free));
+      (blocked ? blocked_count : seen_count) += 1;
+    }
+  }
+  BOOST_TEST(blocked_count > 100);
+  BOOST_TEST(seen_count > 100);
+  BOOST_TEST(tube_hidden > 100);
+  BOOST_TEST(tube_seen > 100);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -11,6 +11,8 @@
 //                 sub-segments each occluder hides (exact intervals, section 4.2.3). In
 //                 umbra, single or joint, E = 0.
 // Visibility is decided exactly from the doubles given; doubles enter only as magnitudes.
+// Every sign is first computed in interval arithmetic and left to the exact test only
+// when the interval cannot certify it (a filter, as in CGAL's predicates: same answers).
 // Tie-breaks: a light not strictly on the outer side of the receiving plane gives 0; a
 // segment that only touches an occluder's boundary is not blocked; a point strictly
 // inside an object gets 0 from every light.
@@ -48,6 +50,19 @@ class IlluminanceSolver {
   //   @param[in] point   receiving point P (m)
   //   @param[in] normal  unit outward normal N at P (precondition: finite, non-zero)
   PointIlluminance at(const Vec3d& point, const Vec3d& normal) const;
+
+  // computes the same illuminance testing, for each light k, only the objects
+  // occluders[k] (indices into Scene::objects, tested in the order given; put the
+  // likeliest blocker first) as occluders: the fast path of a caller that knows which
+  // objects can block each light, e.g. from the exact shadow maps of the face holding
+  // the point (FaceShadow::occluders, shadow_map.h). Everything else is as in at(): the
+  // outer-side tie-break, the exact tests on the objects given, the containing object.
+  // Precondition: occluders.size() == light_count(), and no object outside occluders[k]
+  // hides any part of light k from point; then the result equals at(point, normal).
+  // Throws std::invalid_argument for a wrong number of lists or an index out of range.
+  //   @param[in] occluders  #lights lists of object indices
+  PointIlluminance at(const Vec3d& point, const Vec3d& normal,
+                      const std::vector<std::vector<std::size_t>>& occluders) const;
 
   // computes the illuminance (lux) from light `light` (index into Scene::lights) alone.
   double light_at(std::size_t light, const Vec3d& point, const Vec3d& normal) const;

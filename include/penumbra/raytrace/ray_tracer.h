@@ -37,7 +37,8 @@ struct TraceOptions {
   double min_weight = 1e-3;  // a branch whose product of k_s, k_t falls below stops
   bool fresnel = false;      // k_s, k_t from the dielectric Fresnel equations (docs)
   Attenuation attenuation = Attenuation::none;
-  int tube_samples = 16;      // stratified samples per linear source and shading point
+  int tube_samples = 16;      // stratified elements per linear source and shading point for
+                              // Phong's highlight (the diffuse term is exact, tube_visibility.h)
   std::uint64_t seed = 1980;  // the seed of every random choice (reproducible images)
 };
 
@@ -73,8 +74,9 @@ class RayTracer {
   TraceResult trace(const Vec3d& origin, const Vec3d& direction, std::uint64_t sample_key,
                     RayCounts& counts) const;
 
-  // returns the illuminance (lux) at point on a surface with unit normal, from every light,
-  // with shadow rays (and the stratified tube samples): the E of eq. (2).
+  // returns the illuminance (lux) at point on a surface with unit normal, from every light:
+  // the E of eq. (2), with shadow rays for point and directional lights and the exact visible
+  // pieces of linear lights (tube_visibility.h; every object may occlude the point).
   double illuminance(const Vec3d& point, const Vec3d& normal, std::uint64_t sample_key,
                      RayCounts& counts) const;
 

@@ -1,14 +1,16 @@
 #pragma once
-// The ray tracer's linear (tube) sources: a STOPGAP that samples the tube stratified along
-// its length and casts one shadow ray per sample. The exact visible-interval code of the
-// illuminance layer (Nishita 1985 section 4.2.3) will replace this function: it would
-// return quadrature nodes over the visible intervals in the same SourceElement form, so
-// the ray tracer's shading does not change. See docs/raytrace.md.
+// Stratified sampling of a linear (tube) source: elements that act on a receiver as point
+// sources (Nishita 1985 eq. (5)). The ray tracer's diffuse term from a tube is exact
+// (tube_visibility.h, closed form over the visible pieces); these elements serve Phong's
+// highlight, which has no closed form, and the check that stratified shadow rays converge to
+// the exact value. See docs/raytrace.md, "Tubes".
 
-#include "penumbra/vec3d.h"
 #include <cstdint>
 #include <functional>
 #include <vector>
+
+#include "penumbra/raytrace/tube_visibility.h"
+#include "penumbra/vec3d.h"
 
 namespace penumbra {
 
@@ -22,13 +24,20 @@ struct SourceElement {
   double candela;  // intensity it sends toward the receiver, after any partial blocking
 };
 
-// returns the visible elements of the tube seen from receiver: the tube is cut into
-// `samples` strata of equal length, one point is placed uniformly at random in each
-// (random from `seed`), and each element carries I sin(theta) dl (Nishita eq. (5):
-// theta the angle between the tube and the direction to the receiver, dl = length /
-// samples) times transmittance(position), the fraction of light that passes from the
-// element to the receiver (0 when a shadow ray is blocked). The sum of
-// candela cos(alpha) / r^2 over the elements is an unbiased estimate of the illuminance.
+// returns elements of the tube over `pieces`: their total parameter length is cut into
+// `samples` strata of equal length laid end to end over the pieces, one point is placed
+// uniformly at random in each (random from `seed`), and each element carries
+// I sin(theta) dl (Nishita eq. (5): theta the angle between the tube and the direction to the
+// receiver, dl the stratum's length in metres) times its piece's `passed`. The sum of
+// candela cos(alpha) / r^2 over the elements is an unbiased estimate of the illuminance
+// from the pieces.
+std::vector<SourceElement> sample_tube_stratified(const LinearLight& tube, const Vec3d& receiver,
+                                                  const std::vector<TubePiece>& pieces, int samples,
+                                                  std::uint64_t seed);
+
+// returns elements over the whole tube, each also times transmittance(position), the
+// fraction of light that passes from the element to the receiver (0 when a shadow ray is
+// blocked): stratified shadow rays, Whitted's sampling of an extended source.
 std::vector<SourceElement> sample_tube_stratified(
     const LinearLight& tube, const Vec3d& receiver, int samples, std::uint64_t seed,
     const std::function<double(const Vec3d& position)>& transmittance);

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "penumbra/geometry/convex_polyhedron.h"
+#include "penumbra/scene/camera.h"
 #include "penumbra/photometry/distribution.h"
 
 namespace penumbra {
@@ -73,15 +74,6 @@ struct Light {
   std::string name;
   std::variant<PointLight, LinearLight, DirectionalLight> source;
   std::string json_path;
-};
-
-struct Camera {
-  Vec3d eye{0, 0, 0};
-  Vec3d target{0, 0, -1};
-  Vec3d up{0, 0, 1};
-  double fov_deg = 60;  // vertical field of view
-  int width = 640;
-  int height = 480;
 };
 
 struct Scene {

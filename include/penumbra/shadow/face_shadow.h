@@ -50,4 +50,8 @@ FaceShadow unlit_face(const Face& face);
 // and subtracts the union from the face. occluders must be sorted by occluder.
 FaceShadow unite_shadows(const Face& face, std::vector<OccluderShadow> occluders);
 
+// the same for a face given by its ring, face_ring(face) (as exact points built
+// any way: the result depends only on their values).
+FaceShadow unite_shadows(const Ring2& face_ring, std::vector<OccluderShadow> occluders);
+
 }  // namespace penumbra

@@ -1,0 +1,65 @@
+// penumbra radiosity SCENE -o patches.csv: one interreflected solve of the scene as lit
+// (Dobashi 1995 eq. 14; docs/basis.md, "Radiosity").
+
+#include <iomanip>
+#include <iostream>
+
+#include "penumbra/basis/scene_radiosity.h"
+#include "penumbra/io/atomic_file.h"
+#include "penumbra/scene/load_scene.h"
+#include "radiosity_options.h"
+#include "verbs.h"
+
+namespace penumbra::cli {
+namespace {
+
+struct Arguments {
+  std::string scene;
+  std::string output;
+  RadiosityArguments radiosity;
+};
+
+int run(Arguments& args) {
+  finish_radiosity_options(args.radiosity);
+  const Scene scene = load_scene(args.scene);
+  for (const std::string& warning : scene.warnings) std::cerr << "penumbra: warning: " << warning << "\n";
+  const basis::SceneRadiosity solved = basis::solve_scene_radiosity(scene, args.radiosity.options);
+  io::write_atomically(args.output, [&](std::ostream& out) {
+    out << "object,face,x,y,z,nx,ny,nz,area,E_direct,E";
+    if (solved.channels == 3) out << ",E_r,E_g,E_b";
+    out << '\n' << std::setprecision(10);
+    for (std::size_t i = 0; i < solved.mesh.size(); ++i) {
+      const basis::Patch& patch = solved.mesh.patches()[i];
+      const auto row = static_cast<Eigen::Index>(i);
+      out << scene.objects[patch.object].name << ',' << patch.face;
+      for (double v : patch.centre) out << ',' << v;
+      for (double v : patch.normal) out << ',' << v;
+      out << ',' << patch.area << ',' << solved.direct_per_light.row(row).sum() << ','
+          << basis::photometric(solved.total(row, 0), solved.total(row, 1), solved.total(row, 2));
+      if (solved.channels == 3)
+        out << ',' << solved.total(row, 0) << ',' << solved.total(row, 1) << ',' << solved.total(row, 2);
+      out << '\n';
+    }
+  });
+  std::cout << "patches " << solved.mesh.size() << ", form factor entries " << solved.form_factor_entries
+            << ", sweeps " << solved.iterations << ", channels " << solved.channels << "\n"
+            << std::setprecision(3) << "time: mesh " << solved.timings.mesh_s << " s, form factors "
+            << solved.timings.form_factors_s << " s, direct " << solved.timings.direct_s << " s, solve "
+            << solved.timings.solve_s << " s\n";
+  return 0;
+}
+
+}  // namespace
+
+void register_radiosity(CLI::App& app) {
+  auto args = std::make_shared<Arguments>();
+  CLI::App* verb = app.add_subcommand("radiosity", "interreflected illuminance on patches (CSV)");
+  verb->add_option("SCENE", args->scene, "scene file (JSON)")->required();
+  verb->add_option("-o,--output", args->output,
+                   "patches CSV: object,face,x,y,z,nx,ny,nz,area,E_direct,E")
+      ->required();
+  add_radiosity_options(verb, args->radiosity);
+  verb->callback([args] { exit_status() = run(*args); });
+}
+
+}  // namespace penumbra::cli

@@ -1,0 +1,43 @@
+#include "radiosity_options.h"
+
+#include <cmath>
+
+#include "penumbra/input_error.h"
+
+namespace penumbra::cli {
+
+void add_radiosity_options(CLI::App* verb, RadiosityArguments& arguments) {
+  basis::BasisOptions& options = arguments.options;
+  verb->add_option("--patch-size", options.patch_size, "largest patch edge (m)")->capture_default_str();
+  verb->add_option("--form-factors", arguments.method,
+                   "rays (stratified cosine rays per patch) or analytic (point-to-polygon, O(n^2))")
+      ->capture_default_str();
+  verb->add_option("--rays", options.form_factors.rays, "rays per patch for --form-factors rays")
+      ->capture_default_str();
+  verb->add_option("--seed", options.form_factors.seed, "seed of the ray directions")->capture_default_str();
+  verb->add_option("--tolerance", options.radiosity.tolerance,
+                   "stop when a sweep changes E by less than this fraction")
+      ->capture_default_str();
+  verb->add_option("--max-iterations", options.radiosity.max_iterations, "most sweeps")
+      ->capture_default_str();
+}
+
+void finish_radiosity_options(RadiosityArguments& arguments) {
+  basis::BasisOptions& options = arguments.options;
+  if (!(options.patch_size > 0) || !std::isfinite(options.patch_size))
+    throw InputError("<command line>", "--patch-size", "must be a positive number of metres");
+  if (arguments.method == "rays")
+    options.form_factors.method = basis::FormFactorMethod::rays;
+  else if (arguments.method == "analytic")
+    options.form_factors.method = basis::FormFactorMethod::analytic;
+  else
+    throw InputError("<command line>", "--form-factors", "must be rays or analytic");
+  if (options.form_factors.rays < 1 || options.form_factors.rays > 1 << 24)
+    throw InputError("<command line>", "--rays", "must be between 1 and 16777216");
+  if (!(options.radiosity.tolerance > 0) || !(options.radiosity.tolerance < 1))
+    throw InputError("<command line>", "--tolerance", "must lie in (0, 1)");
+  if (options.radiosity.max_iterations < 1)
+    throw InputError("<command line>", "--max-iterations", "must be at least 1");
+}
+
+}  // namespace penumbra::cli
