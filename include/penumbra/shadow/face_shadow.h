@@ -20,11 +20,11 @@ struct OccluderShadow {
   Ring2 polygon;         // convex, counter-clockwise, canonical, in the face's frame; for a
                          // linear source the occluder's whole shadow (penumbra and umbra)
   // Linear sources only (Nishita 1985 section 4.1, docs/linear-shadows.md):
-  std::optional<Ring2> umbra;             // convex, inside polygon
-  std::optional<LinearCase> linear_case;  // App. A2 Case A or B
+  std::optional<Ring2> umbra{};           // convex, inside polygon
+  std::optional<LinearCase> linear_case{};  // App. A2 Case A or B
   bool object_space = false;              // the contours do not project onto the face: no loops
-  Ring2 penumbra_loop;                    // raw loops, clockwise, as built (section 4.1.2)
-  Ring2 umbra_loop;                       // may cross itself
+  Ring2 penumbra_loop{};                  // raw loops, clockwise, as built (section 4.1.2)
+  Ring2 umbra_loop{};                     // may cross itself
 };
 
 struct FaceShadow {
