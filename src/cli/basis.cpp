@@ -37,7 +37,10 @@ int parse_degree(const std::string& text, const std::string& option) {
 int run(Arguments& args) {
   finish_radiosity_options(args.radiosity);
   basis::BasisOptions& options = args.radiosity.options;
-  options.degree = parse_degree(std::to_string(args.degree), "--degree");
+  if (args.degree < 0 || args.degree > kMaxDegree)
+    throw InputError("<command line>", "--degree",
+                     "the degree must be from 0 to " + std::to_string(kMaxDegree));
+  options.degree = args.degree;
   if (!(args.compression >= 0) || !(args.compression < 1))
     throw InputError("<command line>", "--compress", "must lie in [0, 1)");
   options.compression = args.compression;

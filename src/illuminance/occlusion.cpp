@@ -1,6 +1,7 @@
 #include "penumbra/illuminance/occlusion.h"
 
 #include <algorithm>
+#include <array>
 
 namespace penumbra::illuminance {
 namespace {
@@ -123,6 +124,112 @@ std::optional<ExactInterval> hidden_interval(const HiddenRegion& region, const P
     if (!(low < high)) return std::nullopt;
   }
   return ExactInterval{Exact(low), Exact(high)};
+}
+
+HiddenIntervalBounds hidden_interval_filter(const ConvexPolyhedron& occluder, const Vec3d& apex,
+                                            const Vec3d& a, const Vec3d& b) {
+  using Interval = CGAL::Interval_nt<false>;
+  HiddenIntervalBounds unknown;
+  if (occluder.is_flat()) return unknown;
+  // Section 4.2.3 in the plane of the triangle (apex, a, b): X = w apex + y a + z b with
+  // w + y + z = 1 is on the open segment from the apex to Q(u) = a + u (b - a) for
+  // y = t (1 - u), z = t u, w = 1 - t, 0 < t < 1, so u = z / (y + z). Each face plane is
+  // affine: F(X) = w F(apex) + y F(a) + z F(b). The closed triangle w, y, z >= 0 clipped
+  // by every F <= 0 is a convex polygon whose interior, when it has area, is the set of
+  // points of those segments inside the occluder; the hidden parameters run between the
+  // least and the largest u of its vertices (u is monotone along each edge). Vertices keep
+  // all three weights, so a vertex on a plane through the source's end points gets the
+  // exact value 0 there and is not left uncertain.
+  struct Vertex {
+    Interval w, y, z;
+  };
+  constexpr std::size_t capacity = 64;
+  if (occluder.faces().size() + 3 > capacity) return unknown;
+  std::array<Vertex, capacity> polygon_a, polygon_b;
+  std::array<Vertex, capacity>* polygon = &polygon_a;
+  std::array<Vertex, capacity>* clipped = &polygon_b;
+  std::size_t count = 3;
+  polygon_a[0] = {Interval(1), Interval(0), Interval(0)};
+  polygon_a[1] = {Interval(0), Interval(1), Interval(0)};
+  polygon_a[2] = {Interval(0), Interval(0), Interval(1)};
+  const CGAL::Protect_FPU_rounding<true> upward;
+  bool apex_outside = false;
+  std::array<Interval, capacity> values;
+  for (const Face& face : occluder.faces()) {
+    const auto& h = face.plane.approx();
+    const auto value = [&](const Vec3d& x) {
+      return h.a() * x[0] + h.b() * x[1] + h.c() * x[2] + h.d();
+    };
+    const Interval at_apex = value(apex), at_a = value(a), at_b = value(b);
+    if (at_apex.inf() > 0) apex_outside = true;
+    // Every vertex certainly inside (F <= 0) or certainly outside (F > 0) the closed
+    // half-space, or the filter gives up.
+    bool all_inside = true;
+    for (std::size_t k = 0; k < count; ++k) {
+      const Vertex& v = (*polygon)[k];
+      values[k] = v.w * at_apex + v.y * at_a + v.z * at_b;
+      if (!(values[k].sup() <= 0 || values[k].inf() > 0)) return unknown;
+      all_inside = all_inside && values[k].sup() <= 0;
+    }
+    if (all_inside) continue;
+    // Sutherland-Hodgman against F <= 0.
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t next = (k + 1) % count;
+      const Vertex& p = (*polygon)[k];
+      const Vertex& q = (*polygon)[next];
+      const bool p_in = values[k].sup() <= 0, q_in = values[next].sup() <= 0;
+      if (p_in) (*clipped)[kept++] = p;
+      if (p_in != q_in) {
+        // The crossing, strictly between p and q unless the inside end is on the plane.
+        const Interval& inside_value = p_in ? values[k] : values[next];
+        if (inside_value.inf() == 0 && inside_value.sup() == 0) continue;
+        const Interval s = values[k] / (values[k] - values[next]);
+        (*clipped)[kept++] = {p.w + s * (q.w - p.w), p.y + s * (q.y - p.y),
+                              p.z + s * (q.z - p.z)};
+      }
+    }
+    std::swap(polygon, clipped);
+    count = kept;
+    if (count == 0) return {HiddenIntervalBounds::Verdict::nothing};
+  }
+  // An apex inside or on the closed occluder is hidden_region's other cases.
+  if (!apex_outside) return unknown;
+  // The polygon must certainly have area (twice the area in (y, z), counter-clockwise).
+  Interval area(0);
+  for (std::size_t k = 0; k < count; ++k) {
+    const Vertex& p = (*polygon)[k];
+    const Vertex& q = (*polygon)[(k + 1) % count];
+    area += p.y * q.z - p.z * q.y;
+  }
+  if (!(area.inf() > 0)) return unknown;
+  HiddenIntervalBounds bounds;
+  bounds.verdict = HiddenIntervalBounds::Verdict::interval;
+  bool first = true;
+  for (std::size_t k = 0; k < count; ++k) {
+    const Vertex& v = (*polygon)[k];
+    Interval u;
+    if (v.z.inf() == 0 && v.z.sup() == 0)
+      u = Interval(0);
+    else if (v.y.inf() == 0 && v.y.sup() == 0)
+      u = Interval(1);
+    else {
+      const Interval sum = v.y + v.z;
+      if (!(sum.inf() > 0)) return unknown;
+      u = v.z / sum;
+    }
+    if (first) {
+      bounds.low = bounds.high = u;
+      first = false;
+    } else {
+      bounds.low = CGAL::min(bounds.low, u);
+      bounds.high = CGAL::max(bounds.high, u);
+    }
+  }
+  // hidden_interval's interval lies in (0, 1).
+  bounds.low = CGAL::max(bounds.low, Interval(0));
+  bounds.high = CGAL::min(bounds.high, Interval(1));
+  return bounds;
 }
 
 std::optional<ExactInterval> outer_side_interval_exact(const Point3& point, const Vector3& normal,

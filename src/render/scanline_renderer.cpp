@@ -3,13 +3,22 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
 
 #include "penumbra/illuminance/scene_illuminance.h"
+#include "penumbra/input_error.h"
 #include "penumbra/io/progress.h"
+#include "penumbra/shadow/face_shadow.h"
+#include "penumbra/shadow/linear_face_shadow.h"
+#include "penumbra/shadow/shadow_polygon.h"
 #include "penumbra/shadow/shadow_map.h"
+#include "penumbra/visibility/broad_phase.h"
+#include "penumbra/visibility/lighting_sphere.h"
 #include "vector3.h"
 
 namespace penumbra::render {
@@ -62,12 +71,20 @@ struct ScanlineRenderer::Impl {
   std::vector<FacePlane> planes;  // per receiver slot
   bool parallel;
 
+  static int stamp(const char* what) {
+    static thread_local std::chrono::steady_clock::time_point last;
+    auto now = std::chrono::steady_clock::now();
+    if (std::getenv("PENUMBRA_RENDER_TIMING")) fprintf(stderr, "TIMING %s %.3f\n", what, std::chrono::duration<double>(now - last).count());
+    last = now;
+    return 0;
+  }
   Impl(const Scene& scene_in, const Camera& camera, bool parallel_in)
       : materials(scene_in.materials),
         view(camera),
-        visibility(scanline_visibility(scene_in, camera, parallel_in)),
-        solver(scene_in),
+        visibility((stamp("start"), scanline_visibility(scene_in, camera, parallel_in))),
+        solver((stamp("visibility"), illuminance::IlluminanceSolver(scene_in))),
         parallel(parallel_in) {
+    stamp("solver");
     std::size_t slots = 0;
     for (const Object& object : scene_in.objects) {
       object_material.push_back(object.material);
@@ -80,30 +97,127 @@ struct ScanlineRenderer::Impl {
       for (const Face& face : scene_in.objects[object].solid.faces())
         planes.push_back(face_plane(face));
     if (scene_in.lights.empty()) return;
-    // Nishita 1985 section 4.2.2: the shadow, umbra (and so penumbra) boundaries of each
-    // light on each face. No range culling: a boundary beyond the sphere of lighting
-    // still separates values that must not be interpolated across.
-    ShadowOptions options;
-    options.range_fraction = 0;
-    options.parallel = parallel_in;
-    const ShadowResult shadows = compute_shadows(scene_in, options);
-    for (const LightShadows& light : shadows.lights)
-      for (std::size_t r = 0; r < shadows.receivers.size(); ++r) {
-        const Receiver& receiver = shadows.receivers[r];
-        const FaceShadow& map = light.faces[r];
-        const std::size_t face_slot = first_face[receiver.object] + receiver.face;
-        if (map.beyond_range) throw std::logic_error("render: shadows culled by range");
-        // The objects whose shadow (penumbra or umbra) meets the face are the only ones
-        // that can hide any part of the light from a point of it: the solver tests just
-        // those (none on a wholly lit face). A face turned away keeps none: the solver's
-        // outer-side test gives 0 before any occluder is looked at.
-        occluders[face_slot][light.light] = shadowing_objects(map);
-        if (map.faces_away) continue;
-        const Face& face = scene_in.objects[receiver.object].solid.faces()[receiver.face];
-        std::vector<Segment>& out = boundaries[face_slot];
-        append_boundary(map.shadow, face.frame, out);
-        if (map.linear) append_boundary(map.umbra, face.frame, out);
+    auto t0 = std::chrono::steady_clock::now();
+    prepare_shadows(scene_in);
+    if (std::getenv("PENUMBRA_RENDER_TIMING")) fprintf(stderr, "TIMING shadows total %.3f\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+
+  // stores, for one face slot and light, the face's shadow map: its occluders and the
+  // edges of its shadow (and umbra) regions.
+  void keep(std::size_t face_slot, std::size_t light, const Face& face, const FaceShadow& map) {
+    // The objects whose shadow (penumbra or umbra) meets the face are the only ones
+    // that can hide any part of the light from a point of it: the solver tests just
+    // those (none on a wholly lit face). A face turned away keeps none: the solver's
+    // outer-side test gives 0 before any occluder is looked at.
+    occluders[face_slot][light] = shadowing_objects(map);
+    if (map.faces_away) return;
+    std::vector<Segment>& out = boundaries[face_slot];
+    append_boundary(map.shadow, face.frame, out);
+    if (map.linear) append_boundary(map.umbra, face.frame, out);
+  }
+
+  // Nishita 1985 section 4.2.2: the shadow, umbra (and so penumbra) boundaries of each
+  // light on each face the camera sees (a face no pixel shows is never shaded). No range
+  // culling: a boundary beyond the sphere of lighting still separates values that must
+  // not be interpolated across. The maps are those of compute_shadows (shadow_map.h),
+  // built from the same steps (broad phase, shadow volumes, shadow polygons, exact union)
+  // face by face, and only the occluders and region edges are kept.
+  void prepare_shadows(const Scene& scene) {
+    std::vector<char> seen(boundaries.size(), 0);
+    for (std::size_t pixel = 0; pixel < visibility.objects.size(); ++pixel)
+      if (visibility.objects[pixel] >= 0)
+        seen[slot(visibility.objects[pixel], visibility.faces[pixel])] = 1;
+    std::vector<Receiver> receivers;
+    for (std::size_t object = 0; object < scene.objects.size(); ++object)
+      for (std::size_t face = 0; face < scene.objects[object].solid.faces().size(); ++face)
+        if (seen[first_face[object] + face]) receivers.push_back({object, face});
+    std::vector<const ConvexPolyhedron*> solids;
+    for (const Object& object : scene.objects) solids.push_back(&object.solid);
+    const auto face_of = [&](const Receiver& receiver) -> const Face& {
+      return scene.objects[receiver.object].solid.faces()[receiver.face];
+    };
+    const auto slot_of = [&](const Receiver& receiver) {
+      return first_face[receiver.object] + receiver.face;
+    };
+    const auto for_each = [&](std::size_t count, const auto& work) {
+      if (parallel)
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+                            for (std::size_t k = range.begin(); k != range.end(); ++k) work(k);
+                          });
+      else
+        for (std::size_t k = 0; k < count; ++k) work(k);
+    };
+    if (std::getenv("PENUMBRA_RENDER_TIMING")) fprintf(stderr, "TIMING receivers %zu\n", receivers.size());
+    for (std::size_t light = 0; light < scene.lights.size(); ++light) {
+      auto t0 = std::chrono::steady_clock::now();
+      struct T { std::chrono::steady_clock::time_point t0; std::size_t light; ~T() { if (std::getenv("PENUMBRA_RENDER_TIMING")) fprintf(stderr, "TIMING light %zu %.3f\n", light, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()); } } timer{t0, light};
+      const Light& source = scene.lights[light];
+      if (const auto* tube = std::get_if<LinearLight>(&source.source)) {
+        // End points in lexicographic order, as compute_shadows takes them.
+        Point3 q1 = to_exact(tube->start), q2 = to_exact(tube->end);
+        if (CGAL::compare_xyz(q2, q1) == CGAL::SMALLER) std::swap(q1, q2);
+        // Section 3.1, the sphere of lighting around the tube (the default of `penumbra
+        // shadows`): a face wholly beyond it gets less than the display threshold from the
+        // tube, 1/256 of full scale, everywhere. It gets no shadow map: its occluder list
+        // is the broad phase's (every object whose box meets the box of conv(face,
+        // source), a superset of the objects shadowing it, so the values stay exact) and
+        // it has no boundaries for this light, so interpolation there may bridge the edge
+        // of a shadow worth less than the threshold.
+        const ShadowOptions defaults;
+        const LightingSphere sphere = LightingSphere::around_segment(
+            q1, q2, tube->candela_per_metre, defaults.range_fraction * defaults.full_scale_lux);
+        std::vector<Receiver> near, far;
+        for (const Receiver& receiver : receivers)
+          (sphere.beyond(face_of(receiver)) ? far : near).push_back(receiver);
+        const auto far_candidates = candidate_occluders(solids, far, q1, q2);
+        for (std::size_t r = 0; r < far.size(); ++r)
+          occluders[slot_of(far[r])][light] = far_candidates[r];
+        const auto candidates = candidate_occluders(solids, near, q1, q2);
+        for_each(near.size(), [&](std::size_t r) {
+          std::vector<Occluder> list;
+          for (std::size_t o : candidates[r]) list.push_back({o, solids[o]});
+          const Face& face = face_of(near[r]);
+          try {
+            keep(slot_of(near[r]), light, face, linear_face_shadow(face, q1, q2, std::move(list)));
+          } catch (const std::domain_error&) {
+            throw InputError(scene.file.string(), source.json_path,
+                             "the linear source '" + source.name +
+                                 "' touches or passes through an object that shadows face " +
+                                 std::to_string(near[r].face) + " of '" +
+                                 scene.objects[near[r].object].name +
+                                 "': not supported (docs/linear-shadows.md)");
+          }
+        });
+        continue;
       }
+      const LightPosition position =
+          std::holds_alternative<PointLight>(source.source)
+              ? LightPosition::at(to_exact(std::get<PointLight>(source.source).position))
+              : LightPosition::toward(
+                    to_exact_vector(std::get<DirectionalLight>(source.source).direction));
+      // Faces turned away are wholly unlit (no occluders, no boundaries).
+      std::vector<Receiver> active;
+      for (const Receiver& receiver : receivers)
+        if (!faces_away(face_of(receiver), position)) active.push_back(receiver);
+      const auto candidates = candidate_occluders(solids, active, position);
+      // The shadow volume of each occluder depends only on the light: build it once.
+      std::vector<char> needed(scene.objects.size(), 0);
+      for (const auto& list : candidates)
+        for (std::size_t o : list) needed[o] = 1;
+      std::vector<std::vector<Plane3>> volumes(scene.objects.size());
+      for_each(scene.objects.size(), [&](std::size_t o) {
+        if (needed[o]) volumes[o] = shadow_volume(*solids[o], position);
+      });
+      for_each(active.size(), [&](std::size_t r) {
+        const Face& face = face_of(active[r]);
+        std::vector<OccluderShadow> shadows;
+        for (std::size_t o : candidates[r])
+          if (auto polygon = shadow_polygon(*solids[o], volumes[o], face))
+            shadows.push_back({o, std::move(*polygon)});
+        keep(slot_of(active[r]), light, face, unite_shadows(face, std::move(shadows)));
+      });
+    }
   }
 
   std::size_t slot(long object, int face) const {

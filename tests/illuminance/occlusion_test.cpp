@@ -179,4 +179,48 @@ BOOST_AUTO_TEST_CASE(ray_hidden_matches_the_ray_oracle) {
   BOOST_TEST(hidden < total);
 }
 
+// The interval filter of hidden_interval is certain: where it decides, the exact
+// hidden_region and hidden_interval agree (nothing hidden, or exact ends inside the
+// filter's enclosures). Apexes and source ends both on the 1/8 lattice (exact ties: ends
+// on face planes, segments through edges) and off it.
+BOOST_AUTO_TEST_CASE(hidden_interval_filter_brackets_the_exact_interval) {
+  std::mt19937 engine(30103);  // fixed seed: the same configurations every run
+  std::uniform_int_distribution<int> eighth(-16, 16);
+  std::uniform_real_distribution<double> real(-2, 2);
+  int nothing = 0, intervals = 0, unknown = 0;
+  for (const ConvexPolyhedron& solid : occluders(engine)) {
+    if (solid.is_flat()) continue;
+    for (int k = 0; k < 1500; ++k) {
+      const bool lattice = k % 2 == 0;
+      auto point = [&]() -> Vec3d {
+        if (lattice) return {eighth(engine) / 8.0, eighth(engine) / 8.0, eighth(engine) / 8.0};
+        return {real(engine), real(engine), real(engine)};
+      };
+      const Vec3d apex = point(), a = point(), b = point();
+      if (a == b) continue;
+      const HiddenIntervalBounds bounds = hidden_interval_filter(solid, apex, a, b);
+      if (bounds.verdict == HiddenIntervalBounds::Verdict::unknown) {
+        ++unknown;
+        continue;
+      }
+      const auto exact = hidden_interval(hidden_region(solid, to_exact(apex)), to_exact(a), to_exact(b));
+      if (bounds.verdict == HiddenIntervalBounds::Verdict::nothing) {
+        BOOST_TEST(!exact.has_value());
+        ++nothing;
+        continue;
+      }
+      BOOST_TEST_REQUIRE(exact.has_value());
+      const double low = CGAL::to_double(exact->low), high = CGAL::to_double(exact->high);
+      BOOST_TEST((bounds.low.inf() <= exact->low && exact->low <= bounds.low.sup()));
+      BOOST_TEST((bounds.high.inf() <= exact->high && exact->high <= bounds.high.sup()));
+      BOOST_TEST(low < high);
+      ++intervals;
+    }
+  }
+  BOOST_TEST_MESSAGE("filter: " << nothing << " nothing, " << intervals << " intervals, "
+                                << unknown << " unknown");
+  BOOST_TEST(nothing > 1000);
+  BOOST_TEST(intervals > 300);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

@@ -53,6 +53,25 @@ struct ExactInterval {
 std::optional<ExactInterval> hidden_interval(const HiddenRegion& region, const Point3& a,
                                              const Point3& b);
 
+// What hidden_interval(hidden_region(occluder, apex), a, b) returns, certified by interval
+// arithmetic from the doubles given (each taken as the rational it is), or unknown.
+struct HiddenIntervalBounds {
+  enum class Verdict {
+    nothing,   // certainly no parameter is hidden
+    interval,  // the exact ends lie in [low] and [high]
+    unknown    // intervals cannot decide: ask the exact functions
+  };
+  Verdict verdict = Verdict::unknown;
+  CGAL::Interval_nt<false> low{0}, high{0};
+};
+
+// computes, in interval arithmetic, the sub-segment of the source a -> b hidden from apex
+// by a solid (not flat) occluder: the filter of hidden_region and hidden_interval, as in
+// CGAL's filtered predicates. A verdict other than unknown is certain; a flat occluder,
+// an apex not certainly outside the occluder, or any uncertain sign gives unknown.
+HiddenIntervalBounds hidden_interval_filter(const ConvexPolyhedron& occluder, const Vec3d& apex,
+                                            const Vec3d& a, const Vec3d& b);
+
 // computes the parameters u in (0, 1) strictly on the positive side of the plane through
 // `point` with normal `normal` (any length > 0): the part of the source a -> b on the outer
 // side of the receiving face (Fig. 7, S3), exactly. {} when there is none.
