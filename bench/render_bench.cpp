@@ -2,10 +2,11 @@
 // section 3.3), on two scenes: the default scene (fixtures/scenes/office.json) and the
 // 1,000-polyhedron city of city_scene.h (a street lamp, the sun and two tubes) seen from
 // above one corner. BM_RenderPrepare times the preparation (visibility pass, exact
-// shadows of every light on every face, occluder lists, solver); BM_RenderShade/K the
-// shading at interval K (TBB over scan lines) with its interpolation error against
-// interval 1 (max and mean, relative to the largest E in the image). Counters: process
-// CPU seconds (all threads) per iteration beside the wall time.
+// shadows of every light on every face the camera sees, occluder lists, solver); BM_RenderShade/K
+// the shading at interval K (TBB over scan lines) with its interpolation error against interval 1
+// (max and mean, relative to the largest E in the image). Counters: process CPU seconds (all
+// threads) per iteration beside the wall time. At interval 1, E at every 97th visible pixel is
+// compared with the plain solver (every object an occluder).
 
 #include <benchmark/benchmark.h>
 
@@ -19,6 +20,7 @@
 #include <string>
 
 #include "city_scene.h"
+#include "penumbra/illuminance/scene_illuminance.h"
 #include "penumbra/render/scanline_renderer.h"
 #include "penumbra/scene/load_scene.h"
 
@@ -72,7 +74,9 @@ const render::RenderedImage& exact_image(Which which) {
 double process_cpu_seconds() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  const auto seconds = [](const timeval& t) { return t.tv_sec + t.tv_usec * 1e-6; };
+  const auto seconds = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6;
+  };
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
@@ -106,6 +110,23 @@ void BM_RenderShade(benchmark::State& state, Which which) {
     max_error = std::max(max_error, error);
     sum += error;
     ++seen;
+  }
+  if (interval == 1) {
+    // Independent check of the occluder lists (shadow maps near each light, the broad
+    // phase beyond the tubes' sphere of lighting): the plain solver, every object an
+    // occluder, at every 97th visible pixel, relative to the largest E.
+    const Prepared& scene = prepared(which);
+    const illuminance::IlluminanceSolver plain(scene.scene);
+    double deviation = 0;
+    for (std::size_t pixel = 0; pixel < exact.illuminance.size(); pixel += 97) {
+      const int i = static_cast<int>(pixel % exact.width),
+                j = static_cast<int>(pixel / exact.width);
+      const auto point = renderer.visible_point(i, j);
+      if (!point) continue;
+      const double value = plain.at((*point)[0], (*point)[1]).total;
+      deviation = std::max(deviation, std::abs(value - exact.illuminance[pixel]) / top);
+    }
+    state.counters["plain_solver_deviation"] = deviation;
   }
   state.counters["evaluations"] = static_cast<double>(image.evaluations);
   state.counters["crossings"] = static_cast<double>(image.boundary_crossings);

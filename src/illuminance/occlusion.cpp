@@ -185,8 +185,7 @@ HiddenIntervalBounds hidden_interval_filter(const ConvexPolyhedron& occluder, co
         const Interval& inside_value = p_in ? values[k] : values[next];
         if (inside_value.inf() == 0 && inside_value.sup() == 0) continue;
         const Interval s = values[k] / (values[k] - values[next]);
-        (*clipped)[kept++] = {p.w + s * (q.w - p.w), p.y + s * (q.y - p.y),
-                              p.z + s * (q.z - p.z)};
+        (*clipped)[kept++] = {p.w + s * (q.w - p.w), p.y + s * (q.y - p.y), p.z + s * (q.z - p.z)};
       }
     }
     std::swap(polygon, clipped);

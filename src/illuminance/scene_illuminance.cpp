@@ -266,6 +266,78 @@ bool misses_triangle(const Occluder& occluder, const Vec3d& point, const Vec3d& 
   return false;
 }
 
+// === A uniform grid over the solids' boxes, for the containing-object query: the cell of a
+// point lists every solid whose closed box can hold it. Cells are computed from
+// coordinates by one monotone expression (a difference and a division, rounded to
+// nearest, then floor), so a point inside a box falls in a cell between those of the
+// box's corners: no box that holds the point is missed.
+
+class BoxGrid {
+ public:
+  BoxGrid() = default;
+  // indexes boxes[k] for each k in members (increasing).
+  BoxGrid(const std::vector<Box>& boxes, const std::vector<std::size_t>& members) {
+    if (members.empty()) return;
+    bounds_ = boxes[members.front()];
+    for (std::size_t k : members)
+      for (int i = 0; i < 3; ++i) {
+        bounds_.low[i] = std::min(bounds_.low[i], boxes[k].low[i]);
+        bounds_.high[i] = std::max(bounds_.high[i], boxes[k].high[i]);
+      }
+    // About two cells per member, shaped like the bounds.
+    const double target = 2.0 * static_cast<double>(members.size());
+    std::array<double, 3> extent;
+    double volume = 1;
+    int dimensions = 0;
+    for (int i = 0; i < 3; ++i) {
+      extent[i] = bounds_.high[i] - bounds_.low[i];
+      if (extent[i] > 0) {
+        volume *= extent[i];
+        ++dimensions;
+      }
+    }
+    const double side = dimensions ? std::pow(volume / target, 1.0 / dimensions) : 1;
+    for (int i = 0; i < 3; ++i) {
+      cells_[i] = extent[i] > 0 ? static_cast<int>(std::clamp(extent[i] / side, 1.0, 256.0)) : 1;
+      size_[i] = extent[i] > 0 ? extent[i] / cells_[i] : 1;
+    }
+    buckets_.resize(static_cast<std::size_t>(cells_[0]) * cells_[1] * cells_[2]);
+    for (std::size_t k : members) {
+      const auto low = cell(boxes[k].low), high = cell(boxes[k].high);
+      for (int x = low[0]; x <= high[0]; ++x)
+        for (int y = low[1]; y <= high[1]; ++y)
+          for (int z = low[2]; z <= high[2]; ++z) buckets_[index(x, y, z)].push_back(k);
+    }
+  }
+
+  // returns the members whose box may hold point (increasing), or none.
+  const std::vector<std::size_t>& near(const Vec3d& point) const {
+    static const std::vector<std::size_t> none;
+    if (buckets_.empty()) return none;
+    for (int i = 0; i < 3; ++i)
+      if (point[i] < bounds_.low[i] || point[i] > bounds_.high[i]) return none;
+    const auto at = cell(point);
+    return buckets_[index(at[0], at[1], at[2])];
+  }
+
+ private:
+  std::array<int, 3> cell(const Vec3d& x) const {
+    std::array<int, 3> at;
+    for (int i = 0; i < 3; ++i)
+      at[i] = static_cast<int>(
+          std::clamp(std::floor((x[i] - bounds_.low[i]) / size_[i]), 0.0, cells_[i] - 1.0));
+    return at;
+  }
+  std::size_t index(int x, int y, int z) const {
+    return (static_cast<std::size_t>(z) * cells_[1] + y) * cells_[0] + x;
+  }
+
+  Box bounds_{};
+  std::array<int, 3> cells_{1, 1, 1};
+  std::array<double, 3> size_{1, 1, 1};
+  std::vector<std::vector<std::size_t>> buckets_;
+};
+
 // === Per-light data cached by the solver
 
 struct CachedPoint {
@@ -324,6 +396,7 @@ struct IlluminanceSolver::Impl {
   std::vector<Light> lights;
   std::vector<Occluder> occluders;
   std::vector<CachedLight> cached;
+  BoxGrid solids;  // the occluders that have an interior (not flat), by box
 
   double point_light(const CachedPoint& lamp, const QueryPoint& point, const Vec3d& normal,
                      OccluderSubset subset) const;
@@ -331,9 +404,10 @@ struct IlluminanceSolver::Impl {
                            const Vec3d& normal, OccluderSubset subset) const;
   std::vector<ExactInterval> linear_visible(const CachedLinear& tube, const QueryPoint& point,
                                             const Vec3d& normal, OccluderSubset subset) const;
-  std::optional<std::vector<SourceInterval>> linear_visible_filtered(
-      const CachedLinear& tube, const QueryPoint& point, const Vec3d& normal,
-      OccluderSubset subset) const;
+  std::optional<std::vector<SourceInterval>> linear_visible_filtered(const CachedLinear& tube,
+                                                                     const QueryPoint& point,
+                                                                     const Vec3d& normal,
+                                                                     OccluderSubset subset) const;
   double linear_light(const CachedLinear& tube, const QueryPoint& point, const Vec3d& normal,
                       OccluderSubset subset) const;
   double light_at(std::size_t light, const QueryPoint& point, const Vec3d& normal,
@@ -349,6 +423,16 @@ IlluminanceSolver::IlluminanceSolver(const Scene& scene) {
   impl->lights = scene.lights;
   for (const Object& object : impl->objects)
     impl->occluders.push_back({&object.solid, box_of(object.solid.bbox())});
+  {
+    std::vector<Box> boxes;
+    std::vector<std::size_t> members;
+    for (std::size_t k = 0; k < impl->occluders.size(); ++k) {
+      boxes.push_back(impl->occluders[k].box);
+      // A flat polygon has no interior.
+      if (!impl->occluders[k].solid->is_flat()) members.push_back(k);
+    }
+    impl->solids = BoxGrid(boxes, members);
+  }
   for (const Light& light : impl->lights) {
     if (const auto* point = std::get_if<PointLight>(&light.source)) {
       CachedPoint lamp{to_exact(point->position), point, {}};
@@ -506,8 +590,7 @@ std::optional<std::vector<SourceInterval>> IlluminanceSolver::Impl::linear_visib
       return true;
     }
     // One occluder hides the whole outer part: umbra (certainly, or certainly not).
-    if (blocked.low.sup() <= outer_low.inf() && outer_high.sup() <= blocked.high.inf())
-      return true;
+    if (blocked.low.sup() <= outer_low.inf() && outer_high.sup() <= blocked.high.inf()) return true;
     if (!(blocked.low.inf() > outer_low.sup() || blocked.high.sup() < outer_high.inf())) {
       certain = false;
       return true;
@@ -597,10 +680,9 @@ double IlluminanceSolver::Impl::light_at(std::size_t light, const QueryPoint& po
 
 std::optional<std::size_t> IlluminanceSolver::Impl::containing_object(
     const QueryPoint& point) const {
-  for (std::size_t k = 0; k < occluders.size(); ++k) {
+  for (std::size_t k : solids.near(point.doubles())) {
     const ConvexPolyhedron& solid = *occluders[k].solid;
-    // A flat polygon has no interior.
-    if (solid.is_flat() || !overlap(occluders[k].box, box_of({&point.doubles()}))) continue;
+    if (!overlap(occluders[k].box, box_of({&point.doubles()}))) continue;
     const Certainly inside = inside_solid(solid, point.doubles());
     if (inside == Certainly::yes || (inside == Certainly::unknown &&
                                      solid.bounded_side(point.exact()) == CGAL::ON_BOUNDED_SIDE))

@@ -3,9 +3,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
@@ -15,8 +12,8 @@
 #include "penumbra/io/progress.h"
 #include "penumbra/shadow/face_shadow.h"
 #include "penumbra/shadow/linear_face_shadow.h"
-#include "penumbra/shadow/shadow_polygon.h"
 #include "penumbra/shadow/shadow_map.h"
+#include "penumbra/shadow/shadow_polygon.h"
 #include "penumbra/visibility/broad_phase.h"
 #include "penumbra/visibility/lighting_sphere.h"
 #include "vector3.h"
@@ -56,6 +53,99 @@ std::vector<std::size_t> shadowing_objects(const FaceShadow& map) {
   return objects;
 }
 
+// === A cull for the objects that can shadow a face beyond a light's sphere of lighting
+
+using Interval = CGAL::Interval_nt<false>;
+using IntervalPoint = std::array<Interval, 3>;
+
+IntervalPoint interval_point(const Point3& p) {
+  const auto& approx = p.approx();
+  return {approx.x(), approx.y(), approx.z()};
+}
+
+Interval dot_from(const IntervalPoint& normal, const IntervalPoint& x,
+                  const IntervalPoint& origin) {
+  return normal[0] * (x[0] - origin[0]) + normal[1] * (x[1] - origin[1]) +
+         normal[2] * (x[2] - origin[2]);
+}
+
+IntervalPoint cross_from(const IntervalPoint& origin, const IntervalPoint& to_a,
+                         const IntervalPoint& to_b) {
+  const Interval a[3] = {to_a[0] - origin[0], to_a[1] - origin[1], to_a[2] - origin[2]};
+  const Interval b[3] = {to_b[0] - origin[0], to_b[1] - origin[1], to_b[2] - origin[2]};
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// The closed region W = conv(face, source) swept by the segments from the face to a tube
+// (or a point light: both ends the same), with the planes that certainly support it (W on their
+// closed negative side), for a separating-plane test against occluders in interval arithmetic.
+class SweptRegion {
+ public:
+  SweptRegion(const Face& face, const Point3& q1, const Point3& q2) {
+    for (const Point3& v : face.vertices) points_.push_back(interval_point(v));
+    const std::size_t n = points_.size();
+    points_.push_back(interval_point(q1));
+    points_.push_back(interval_point(q2));
+    const IntervalPoint& a = points_[n];
+    const IntervalPoint& b = points_[n + 1];
+    // Candidate planes: through the tube and a face vertex; through a face edge and an end
+    // of the tube; the face's own plane. Each is kept, oriented, if every point of W is
+    // certainly on one closed side of it.
+    for (std::size_t k = 0; k < n; ++k) {
+      const IntervalPoint& v = points_[k];
+      const IntervalPoint& w = points_[(k + 1) % n];
+      add(v, cross_from(a, b, v));
+      add(v, cross_from(v, w, a));
+      add(v, cross_from(v, w, b));
+    }
+    if (n >= 3) add(points_[0], cross_from(points_[0], points_[1], points_[2]));
+  }
+
+  // returns true when a plane certainly separates the occluder's interior from W: the
+  // occluder strictly on the positive side of a supporting plane of W, or W strictly on the
+  // outer side of one of the occluder's faces. Then no segment from the face to the tube
+  // meets the occluder: it casts no shadow on the face.
+  bool separated_from(const ConvexPolyhedron& solid) const {
+    const CGAL::Protect_FPU_rounding<true> upward;
+    for (const Face& face : solid.faces()) {
+      const auto& h = face.plane.approx();
+      if (std::all_of(points_.begin(), points_.end(), [&](const IntervalPoint& x) {
+            return (h.a() * x[0] + h.b() * x[1] + h.c() * x[2] + h.d()).inf() > 0;
+          }))
+        return true;
+    }
+    std::vector<IntervalPoint> vertices;
+    for (const Point3& v : solid.vertices()) vertices.push_back(interval_point(v));
+    for (const auto& [origin, normal] : planes_)
+      if (std::all_of(vertices.begin(), vertices.end(), [&](const IntervalPoint& x) {
+            return dot_from(normal, x, origin).inf() > 0;
+          }))
+        return true;
+    return false;
+  }
+
+ private:
+  void add(const IntervalPoint& origin, const IntervalPoint& normal) {
+    const CGAL::Protect_FPU_rounding<true> upward;
+    if (std::all_of(normal.begin(), normal.end(),
+                    [](const Interval& c) { return c.inf() == 0 && c.sup() == 0; }))
+      return;
+    bool non_positive = true, non_negative = true;
+    for (const IntervalPoint& x : points_) {
+      const Interval value = dot_from(normal, x, origin);
+      non_positive = non_positive && value.sup() <= 0;
+      non_negative = non_negative && value.inf() >= 0;
+    }
+    if (non_positive)
+      planes_.push_back({origin, normal});
+    else if (non_negative)
+      planes_.push_back({origin, {-normal[0], -normal[1], -normal[2]}});
+  }
+
+  std::vector<IntervalPoint> points_;
+  std::vector<std::pair<IntervalPoint, IntervalPoint>> planes_;
+};
+
 }  // namespace
 
 struct ScanlineRenderer::Impl {
@@ -71,20 +161,12 @@ struct ScanlineRenderer::Impl {
   std::vector<FacePlane> planes;  // per receiver slot
   bool parallel;
 
-  static int stamp(const char* what) {
-    static thread_local std::chrono::steady_clock::time_point last;
-    auto now = std::chrono::steady_clock::now();
-    if (std::getenv("PENUMBRA_RENDER_TIMING")) fprintf(stderr, "TIMING %s %.3f\n", what, std::chrono::duration<double>(now - last).count());
-    last = now;
-    return 0;
-  }
   Impl(const Scene& scene_in, const Camera& camera, bool parallel_in)
       : materials(scene_in.materials),
         view(camera),
-        visibility((stamp("start"), scanline_visibility(scene_in, camera, parallel_in))),
-        solver((stamp("visibility"), illuminance::IlluminanceSolver(scene_in))),
+        visibility(scanline_visibility(scene_in, camera, parallel_in)),
+        solver(scene_in),
         parallel(parallel_in) {
-    stamp("solver");
     std::size_t slots = 0;
     for (const Object& object : scene_in.objects) {
       object_material.push_back(object.material);
@@ -97,9 +179,7 @@ struct ScanlineRenderer::Impl {
       for (const Face& face : scene_in.objects[object].solid.faces())
         planes.push_back(face_plane(face));
     if (scene_in.lights.empty()) return;
-    auto t0 = std::chrono::steady_clock::now();
     prepare_shadows(scene_in);
-    if (std::getenv("PENUMBRA_RENDER_TIMING")) fprintf(stderr, "TIMING shadows total %.3f\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
 
   // stores, for one face slot and light, the face's shadow map: its occluders and the
@@ -117,11 +197,19 @@ struct ScanlineRenderer::Impl {
   }
 
   // Nishita 1985 section 4.2.2: the shadow, umbra (and so penumbra) boundaries of each
-  // light on each face the camera sees (a face no pixel shows is never shaded). No range
-  // culling: a boundary beyond the sphere of lighting still separates values that must
-  // not be interpolated across. The maps are those of compute_shadows (shadow_map.h),
-  // built from the same steps (broad phase, shadow volumes, shadow polygons, exact union)
-  // face by face, and only the occluders and region edges are kept.
+  // light on each face the camera sees (a face no pixel shows is never shaded). The maps
+  // are those of compute_shadows (shadow_map.h), built from the same steps (broad phase,
+  // shadow volumes, shadow polygons, exact union) face by face; only the occluders and
+  // region edges are kept.
+  //
+  // Section 3.1, the sphere of lighting of a point or linear source (the default of
+  // `penumbra shadows`: 1/256 of a 500 lx full scale): a face wholly beyond it gets less
+  // than that threshold from the light everywhere. Such a face gets no shadow map for the
+  // light: its occluder list is the broad phase's candidates (every object whose box meets
+  // the box of conv(face, source)) less those a plane certainly separates from
+  // conv(face, source) (SweptRegion): a superset of the objects shadowing the face, so the
+  // values stay exact. It has no boundaries for that light, so interpolation there may
+  // bridge the edge of a shadow worth less than the threshold (docs/render.md).
   void prepare_shadows(const Scene& scene) {
     std::vector<char> seen(boundaries.size(), 0);
     for (std::size_t pixel = 0; pixel < visibility.objects.size(); ++pixel)
@@ -148,31 +236,30 @@ struct ScanlineRenderer::Impl {
       else
         for (std::size_t k = 0; k < count; ++k) work(k);
     };
-    if (std::getenv("PENUMBRA_RENDER_TIMING")) fprintf(stderr, "TIMING receivers %zu\n", receivers.size());
+    const ShadowOptions defaults;  // the sphere of lighting of `penumbra shadows`
+    const double threshold = defaults.range_fraction * defaults.full_scale_lux;
+    const auto keep_far = [&](std::size_t light, const std::vector<Receiver>& far,
+                              const std::vector<std::vector<std::size_t>>& candidates,
+                              const Point3& q1, const Point3& q2) {
+      for_each(far.size(), [&](std::size_t r) {
+        const SweptRegion swept(face_of(far[r]), q1, q2);
+        std::vector<std::size_t>& list = occluders[slot_of(far[r])][light];
+        for (std::size_t o : candidates[r])
+          if (!swept.separated_from(*solids[o])) list.push_back(o);
+      });
+    };
     for (std::size_t light = 0; light < scene.lights.size(); ++light) {
-      auto t0 = std::chrono::steady_clock::now();
-      struct T { std::chrono::steady_clock::time_point t0; std::size_t light; ~T() { if (std::getenv("PENUMBRA_RENDER_TIMING")) fprintf(stderr, "TIMING light %zu %.3f\n", light, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()); } } timer{t0, light};
       const Light& source = scene.lights[light];
       if (const auto* tube = std::get_if<LinearLight>(&source.source)) {
         // End points in lexicographic order, as compute_shadows takes them.
         Point3 q1 = to_exact(tube->start), q2 = to_exact(tube->end);
         if (CGAL::compare_xyz(q2, q1) == CGAL::SMALLER) std::swap(q1, q2);
-        // Section 3.1, the sphere of lighting around the tube (the default of `penumbra
-        // shadows`): a face wholly beyond it gets less than the display threshold from the
-        // tube, 1/256 of full scale, everywhere. It gets no shadow map: its occluder list
-        // is the broad phase's (every object whose box meets the box of conv(face,
-        // source), a superset of the objects shadowing it, so the values stay exact) and
-        // it has no boundaries for this light, so interpolation there may bridge the edge
-        // of a shadow worth less than the threshold.
-        const ShadowOptions defaults;
-        const LightingSphere sphere = LightingSphere::around_segment(
-            q1, q2, tube->candela_per_metre, defaults.range_fraction * defaults.full_scale_lux);
+        const LightingSphere sphere =
+            LightingSphere::around_segment(q1, q2, tube->candela_per_metre, threshold);
         std::vector<Receiver> near, far;
         for (const Receiver& receiver : receivers)
           (sphere.beyond(face_of(receiver)) ? far : near).push_back(receiver);
-        const auto far_candidates = candidate_occluders(solids, far, q1, q2);
-        for (std::size_t r = 0; r < far.size(); ++r)
-          occluders[slot_of(far[r])][light] = far_candidates[r];
+        keep_far(light, far, candidate_occluders(solids, far, q1, q2), q1, q2);
         const auto candidates = candidate_occluders(solids, near, q1, q2);
         for_each(near.size(), [&](std::size_t r) {
           std::vector<Occluder> list;
@@ -196,10 +283,19 @@ struct ScanlineRenderer::Impl {
               ? LightPosition::at(to_exact(std::get<PointLight>(source.source).position))
               : LightPosition::toward(
                     to_exact_vector(std::get<DirectionalLight>(source.source).direction));
-      // Faces turned away are wholly unlit (no occluders, no boundaries).
-      std::vector<Receiver> active;
+      // Faces turned away are wholly unlit (no occluders, no boundaries); the sun has no
+      // sphere of lighting.
+      std::optional<LightingSphere> sphere;
+      if (const auto* lamp = std::get_if<PointLight>(&source.source))
+        sphere = LightingSphere::absolute(position.point(), lamp->distribution->max_intensity(),
+                                          threshold);
+      std::vector<Receiver> active, far;
       for (const Receiver& receiver : receivers)
-        if (!faces_away(face_of(receiver), position)) active.push_back(receiver);
+        if (!faces_away(face_of(receiver), position))
+          (sphere && sphere->beyond(face_of(receiver)) ? far : active).push_back(receiver);
+      if (!far.empty())
+        keep_far(light, far, candidate_occluders(solids, far, position), position.point(),
+                 position.point());
       const auto candidates = candidate_occluders(solids, active, position);
       // The shadow volume of each occluder depends only on the light: build it once.
       std::vector<char> needed(scene.objects.size(), 0);

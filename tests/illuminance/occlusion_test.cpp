@@ -203,7 +203,8 @@ BOOST_AUTO_TEST_CASE(hidden_interval_filter_brackets_the_exact_interval) {
         ++unknown;
         continue;
       }
-      const auto exact = hidden_interval(hidden_region(solid, to_exact(apex)), to_exact(a), to_exact(b));
+      const auto exact =
+          hidden_interval(hidden_region(solid, to_exact(apex)), to_exact(a), to_exact(b));
       if (bounds.verdict == HiddenIntervalBounds::Verdict::nothing) {
         BOOST_TEST(!exact.has_value());
         ++nothing;
@@ -217,8 +218,8 @@ BOOST_AUTO_TEST_CASE(hidden_interval_filter_brackets_the_exact_interval) {
       ++intervals;
     }
   }
-  BOOST_TEST_MESSAGE("filter: " << nothing << " nothing, " << intervals << " intervals, "
-                                << unknown << " unknown");
+  BOOST_TEST_MESSAGE("filter: " << nothing << " nothing, " << intervals << " intervals, " << unknown
+                                << " unknown");
   BOOST_TEST(nothing > 1000);
   BOOST_TEST(intervals > 300);
 }

@@ -470,11 +470,12 @@ BOOST_AUTO_TEST_CASE(interval_filtered_tube_equals_the_exact_path) {
       const double x = 10.0 * i, y = 10.0 * j, height = 3.0 * (2 + (i * 3 + j * 5) % 5);
       objects += std::string(objects.empty() ? "" : ",") + R"({"name": "b)" +
                  std::to_string(i * 4 + j) + R"(", "box": {"min": [)" + std::to_string(x + 2) +
-                 ", " + std::to_string(y + 2) + R"(, 0], "max": [)" + std::to_string(x + 8) +
-                 ", " + std::to_string(y + 8) + ", " + std::to_string(height) + "]}}";
+                 ", " + std::to_string(y + 2) + R"(, 0], "max": [)" + std::to_string(x + 8) + ", " +
+                 std::to_string(y + 8) + ", " + std::to_string(height) + "]}}";
     }
   const Scene scene = scene_from(
-      objects, R"({"name": "tube", "linear": [[15, 20, 6], [25, 20, 6]], "candela_per_metre": 300})");
+      objects,
+      R"({"name": "tube", "linear": [[15, 20, 6], [25, 20, 6]], "candela_per_metre": 300})");
   const auto& tube = std::get<LinearLight>(scene.lights[0].source);
   const IlluminanceSolver solver(scene);
   std::mt19937 random(5);  // fixed: the same points on every run

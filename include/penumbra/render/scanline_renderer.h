@@ -6,7 +6,10 @@
 // every K pixels, and interpolated linearly in between. The shadow boundaries are the
 // exact shadow and umbra regions of every light on the face (shadow_map.h), carried into
 // the scan plane, so interpolation never bridges the edge of a shadow; that also covers
-// section 4.2.2's object-space case, where the loops do not project onto the face.
+// section 4.2.2's object-space case, where the loops do not project onto the face. A face
+// wholly beyond a point or linear light's sphere of lighting (section 3.1: below 1/256 of
+// a 500 lx full scale) has no boundaries for that light: there interpolation may bridge
+// the edge of a shadow worth less than that threshold.
 //
 // A diffuse face's luminance is L = rho E / pi (cd/m^2), tinted per channel by its
 // material's colour.
@@ -41,13 +44,15 @@ struct RenderedImage {
 };
 
 // Renders one camera's view of a scene, caching what does not depend on the interval:
-// the visibility map, the shadow boundaries of every visible face and the illuminance
-// solver.
+// the visibility map, the shadow boundaries and occluder lists of every visible face and
+// the illuminance solver.
 class ScanlineRenderer {
  public:
   // computes the visibility of camera's image, the exact shadows of every light on every
-  // face (without range culling) and prepares the illuminance solver. Throws what
-  // compute_shadows throws for a scene it cannot take.
+  // face the camera sees (within the light's sphere of lighting; beyond it, the objects
+  // that can shadow the face, without boundaries) and prepares the illuminance solver.
+  // Throws what compute_shadows throws for a tube touching an object that shadows a seen
+  // face.
   ScanlineRenderer(const Scene& scene, const Camera& camera, bool parallel = true);
   ~ScanlineRenderer();
 
