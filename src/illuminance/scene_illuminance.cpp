@@ -266,6 +266,24 @@ bool misses_triangle(const Occluder& occluder, const Vec3d& point, const Vec3d& 
   return false;
 }
 
+// What the cheap tests say of one occluder and a tube seen from point, before any exact
+// work: it certainly hides nothing (its box misses the triangle's, or a separating axis),
+// certainly hides the whole tube (a solid meeting both rays to the tube's ends, when the
+// whole tube is on the outer side: the hidden points of one convex occluder form an
+// interval), or must be examined.
+enum class TubeCull { misses, hides_all, examine };
+
+TubeCull cull_for_tube(const Occluder& occluder, const Box& triangle, const Vec3d& point,
+                       const LinearLight& light, bool whole_source) {
+  if (!overlap(occluder.box, triangle) || misses_triangle(occluder, point, light.start, light.end))
+    return TubeCull::misses;
+  if (whole_source && !occluder.solid->is_flat() &&
+      ray_meets_solid(*occluder.solid, point, {}, &light.start) == Certainly::yes &&
+      ray_meets_solid(*occluder.solid, point, {}, &light.end) == Certainly::yes)
+    return TubeCull::hides_all;
+  return TubeCull::examine;
+}
+
 // === A uniform grid over the solids' boxes, for the containing-object query: the cell of a
 // point lists every solid whose closed box can hold it. Cells are computed from
 // coordinates by one monotone expression (a difference and a division, rounded to
@@ -528,16 +546,8 @@ std::vector<ExactInterval> IlluminanceSolver::Impl::linear_visible(const CachedL
   std::vector<ExactInterval> hidden;
   const bool umbra = any_occluder(occluders.size(), subset, [&](std::size_t k) {
     const Occluder& occluder = occluders[k];
-    if (!overlap(occluder.box, triangle) ||
-        misses_triangle(occluder, point.doubles(), light.start, light.end))
-      return false;
-    // The points of the source hidden by one convex occluder form an interval (the cone
-    // from P over its interior is convex), so when the outer part is the whole source and
-    // the occluder certainly hides both ends, it hides all of it: umbra.
-    if (whole_source && !occluder.solid->is_flat() &&
-        ray_meets_solid(*occluder.solid, point.doubles(), {}, &light.start) == Certainly::yes &&
-        ray_meets_solid(*occluder.solid, point.doubles(), {}, &light.end) == Certainly::yes)
-      return true;
+    const TubeCull cull = cull_for_tube(occluder, triangle, point.doubles(), light, whole_source);
+    if (cull != TubeCull::examine) return cull == TubeCull::hides_all;
     const HiddenRegion region = hidden_region(*occluder.solid, point.exact());
     if (region.empty()) return false;
     const auto blocked = hidden_interval(region, tube.start, tube.end);
@@ -575,13 +585,8 @@ std::optional<std::vector<SourceInterval>> IlluminanceSolver::Impl::linear_visib
   bool certain = true;
   const bool umbra = any_occluder(occluders.size(), subset, [&](std::size_t k) {
     const Occluder& occluder = occluders[k];
-    if (!overlap(occluder.box, triangle) ||
-        misses_triangle(occluder, point.doubles(), light.start, light.end))
-      return false;
-    if (whole_source && !occluder.solid->is_flat() &&
-        ray_meets_solid(*occluder.solid, point.doubles(), {}, &light.start) == Certainly::yes &&
-        ray_meets_solid(*occluder.solid, point.doubles(), {}, &light.end) == Certainly::yes)
-      return true;
+    const TubeCull cull = cull_for_tube(occluder, triangle, point.doubles(), light, whole_source);
+    if (cull != TubeCull::examine) return cull == TubeCull::hides_all;
     const HiddenIntervalBounds blocked =
         hidden_interval_filter(*occluder.solid, point.doubles(), light.start, light.end);
     if (blocked.verdict == HiddenIntervalBounds::Verdict::nothing) return false;
