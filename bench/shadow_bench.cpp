@@ -65,31 +65,12 @@ void BM_ShadowsTubeY(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_ShadowsLamp)
-    ->Arg(100)
-    ->Arg(1000)
-    ->Arg(10000)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(1);
-BENCHMARK(BM_ShadowsSun)
-    ->Arg(100)
-    ->Arg(1000)
-    ->Arg(10000)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(1);
-BENCHMARK(BM_ShadowsTubeX)
-    ->Arg(100)
-    ->Arg(1000)
-    ->Arg(10000)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(1);
-BENCHMARK(BM_ShadowsTubeY)
-    ->Arg(100)
-    ->Arg(1000)
-    ->Arg(10000)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(1);
+// the city sizes of the issue, one timed run each
+static void city_sizes(benchmark::internal::Benchmark* benchmark) {
+  benchmark->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+}
+
+BENCHMARK(BM_ShadowsLamp)->Apply(city_sizes);
+BENCHMARK(BM_ShadowsSun)->Apply(city_sizes);
+BENCHMARK(BM_ShadowsTubeX)->Apply(city_sizes);
+BENCHMARK(BM_ShadowsTubeY)->Apply(city_sizes);
