@@ -1,10 +1,9 @@
 #include "penumbra/basis/direct_lighting.h"
 
-#include <tbb/parallel_for.h>
-
 #include "penumbra/basis/patch_mesh.h"
 #include "penumbra/basis/spherical_harmonics.h"
 #include "penumbra/illuminance/scene_illuminance.h"
+#include "penumbra/parallel.h"
 #include "penumbra/scene/scene.h"
 
 namespace penumbra::basis {
@@ -16,14 +15,10 @@ namespace {
 // runs compute(i) for every patch, in parallel when asked, reporting each to progress.
 void for_each_patch(std::size_t count, bool parallel, const std::function<void(std::size_t)>& progress,
                     const std::function<void(std::size_t)>& compute) {
-  const auto step = [&](std::size_t i) {
+  for_each_index(count, parallel, [&](std::size_t i) {
     compute(i);
     if (progress) progress(1);
-  };
-  if (parallel)
-    tbb::parallel_for(std::size_t{0}, count, step);
-  else
-    for (std::size_t i = 0; i < count; ++i) step(i);
+  });
 }
 
 }  // namespace

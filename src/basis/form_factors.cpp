@@ -1,12 +1,10 @@
 #include "penumbra/basis/form_factors.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include "penumbra/basis/patch_mesh.h"
+#include "penumbra/parallel.h"
 #include "penumbra/raytrace/embree_scene.h"
 #include "penumbra/scene/scene.h"
 
@@ -236,10 +234,7 @@ FormFactorMatrix form_factors(const Scene& scene, const PatchMesh& mesh,
                   : analytic_row(mesh, embree, i, offset);
     if (progress) progress(1);
   };
-  if (options.parallel)
-    tbb::parallel_for(std::size_t{0}, mesh.size(), compute);
-  else
-    for (std::size_t i = 0; i < mesh.size(); ++i) compute(i);
+  for_each_index(mesh.size(), options.parallel, compute);
   FormFactorMatrix matrix(static_cast<std::int64_t>(mesh.size()),
                           static_cast<std::int64_t>(mesh.size()));
   std::vector<std::int64_t> sizes;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "penumbra/illuminance/scene_illuminance.h"
+#include "penumbra/parallel.h"
 #include "penumbra/input_error.h"
 #include "penumbra/io/progress.h"
 #include "penumbra/shadow/face_shadow.h"
@@ -228,13 +229,7 @@ struct ScanlineRenderer::Impl {
       return first_face[receiver.object] + receiver.face;
     };
     const auto for_each = [&](std::size_t count, const auto& work) {
-      if (parallel)
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count),
-                          [&](const tbb::blocked_range<std::size_t>& range) {
-                            for (std::size_t k = range.begin(); k != range.end(); ++k) work(k);
-                          });
-      else
-        for (std::size_t k = 0; k < count; ++k) work(k);
+      for_each_index(count, parallel, work);
     };
     const ShadowOptions defaults;  // the sphere of lighting of `penumbra shadows`
     const double threshold = defaults.range_fraction * defaults.full_scale_lux;

@@ -4,9 +4,8 @@
 #include <chrono>
 #include <numeric>
 
-#include <tbb/parallel_for.h>
-
 #include "penumbra/input_error.h"
+#include "penumbra/parallel.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/shadow_polygon.h"
 #include "penumbra/visibility/lighting_sphere.h"
@@ -59,18 +58,6 @@ void rank_candidates(std::vector<std::vector<std::size_t>>& candidates,
   }
 }
 
-// runs shade(a) for every a in [0, count), across threads when parallel.
-template <typename Shade>
-void for_each_receiver(std::size_t count, bool parallel, const Shade& shade) {
-  if (parallel)
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t a = range.begin(); a != range.end(); ++a) shade(a);
-                      });
-  else
-    for (std::size_t a = 0; a < count; ++a) shade(a);
-}
-
 LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receivers,
                          const std::vector<std::size_t>& rank, std::size_t light_index,
                          const ShadowOptions& options) {
@@ -120,7 +107,7 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
   for (const auto& list : candidates)
     for (std::size_t occluder : list) needed[occluder] = 1;
   std::vector<std::vector<Plane3>> volumes(scene.objects.size());
-  for_each_receiver(scene.objects.size(), options.parallel, [&](std::size_t o) {
+  for_each_index(scene.objects.size(), options.parallel, [&](std::size_t o) {
     if (needed[o]) volumes[o] = shadow_volume(scene.objects[o].solid, position);
   });
 
@@ -139,7 +126,7 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
         shadows.push_back({occluder, std::move(*polygon)});
     result.faces[active_index[a]] = unite_shadows(receiver.ring(), std::move(shadows));
   };
-  for_each_receiver(active.size(), options.parallel, shade);
+  for_each_index(active.size(), options.parallel, shade);
 
   for (const FaceShadow& face : result.faces) stats.pairs_shadowing += face.occluders.size();
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -212,7 +199,7 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
                            "': not supported (docs/linear-shadows.md)");
     }
   };
-  for_each_receiver(active.size(), options.parallel, shade);
+  for_each_index(active.size(), options.parallel, shade);
 
   for (const FaceShadow& face : result.faces) {
     stats.faces_away += face.faces_away;
