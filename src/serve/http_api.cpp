@@ -1,6 +1,7 @@
 // The routes of the lighting-design server (http_api.h; docs/serve.md, "API"). Errors
 // answer {"error": "..."} with a 4xx status: 400 malformed or invalid, 403 a path that
-// climbs out of the page, 404 unknown path or light, 413 a body over the limit (httplib).
+// climbs out of the page, 404 unknown path or light, 405 a known path asked with another
+// method (with Allow), 413 a body over the limit (httplib).
 
 #include "http_api.h"
 
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <regex>
 
 #include "mesh_payload.h"
 #include "static_files.h"
@@ -216,6 +218,19 @@ void register_api(httplib::Server& server, LightingSession& session, std::mutex&
   server.Put("/api/lighting", load_lighting);
 }
 
+// returns the methods a path answers, as an Allow header: the routes of register_api
+// (their paths as registered) and the page (GET). Empty for an /api/ path none has.
+std::string allowed_methods(const std::string& path) {
+  static const std::vector<std::pair<std::regex, const char*>> routes = {
+      {std::regex("/api/(scene|mesh|lights|relight|lux)"), "GET"},
+      {std::regex("/api/lights/[^/]+"), "GET, POST"},
+      {std::regex("/api/lights/[^/]+/control"), "POST"},
+      {std::regex("/api/lighting"), "GET, POST, PUT"}};
+  for (const auto& [pattern, allow] : routes)
+    if (std::regex_match(path, pattern)) return allow;
+  return path.rfind("/api/", 0) == 0 ? "" : "GET";
+}
+
 void register_page(httplib::Server& server) {
   server.Get(R"(/.*)", [](const httplib::Request& request, httplib::Response& response) {
     const StaticFile file = find_static_file(request.path);
@@ -235,6 +250,12 @@ void register_routes(httplib::Server& server, LightingSession& session, std::mut
   // Anything no route answered (e.g. a POST to a page), and statuses set without a body.
   server.set_error_handler([](const httplib::Request& request, httplib::Response& response) {
     if (!response.body.empty()) return;
+    // no route for this method: a path that exists under other methods is 405
+    const std::string allow = response.status == 404 ? allowed_methods(request.path) : "";
+    if (!allow.empty()) {
+      response.set_header("Allow", allow);
+      return send_error(response, 405, request.method + " not allowed on " + request.path + " (allowed: " + allow + ")");
+    }
     const int status = response.status;
     const std::string message = status == 413 ? "request body too large"
                                 : status == 404

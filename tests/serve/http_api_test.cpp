@@ -199,7 +199,13 @@ BOOST_AUTO_TEST_CASE(bad_requests_get_4xx_and_the_server_survives) {
     BOOST_TEST(client.Get(query)->status == 400, query);
   BOOST_TEST(client.Get("/api/lux?patch=999999")->status == 404);
   BOOST_TEST(client.Get("/api/lights/nope")->status == 404);
-  BOOST_TEST(client.Delete("/api/lighting")->status == 404);
+  // a known path with a method it does not answer: 405 with the methods it does
+  const auto wrong_method = client.Delete("/api/lighting");
+  BOOST_TEST(wrong_method->status == 405);
+  BOOST_TEST(wrong_method->get_header_value("Allow") == "GET, POST, PUT");
+  BOOST_TEST(client.Post("/api/scene", "{}", "application/json")->status == 405);
+  BOOST_TEST(client.Post("/index.html", "{}", "application/json")->status == 405);
+  BOOST_TEST(client.Delete("/api/nothing")->status == 404);
   // still serving, state untouched by the refused edits
   const auto state = client.Get("/api/lights/downlight");
   BOOST_TEST_REQUIRE(state->status == 200);
