@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "penumbra/basis/patch_mesh.h"
+#include "penumbra/scene/camera_frame.h"
 
 namespace penumbra::basis {
 
@@ -50,12 +51,8 @@ GouraudImage gouraud_image(const PatchMesh& mesh, const Eigen::MatrixX3f& vertex
   image.patch.assign(pixels, -1);
   std::vector<double> inverse_depth(pixels, 0);  // 1 / z; 0 = nothing drawn
 
-  // the camera frame of raytrace/pinhole_camera.h: forward, right = forward x up, up
-  const Vec3d forward = normalized(camera.target - camera.eye);
-  const Vec3d right = normalized(cross(forward, camera.up));
-  const Vec3d up = cross(right, forward);
-  const double half_height = std::tan(camera.fov_deg * M_PI / 360);
-  const double half_width = half_height * camera.width / camera.height;
+  const CameraFrame frame(camera);
+  const double half_height = frame.half_height(), half_width = frame.half_width();
   const double near = 1e-3;
 
   std::vector<std::uint32_t> triangle_patch;
@@ -67,9 +64,9 @@ GouraudImage gouraud_image(const PatchMesh& mesh, const Eigen::MatrixX3f& vertex
     if (dot(patch.normal, camera.eye - patch.centre) <= 0) continue;
     std::vector<CameraVertex> polygon;
     for (std::uint32_t v : triangles[t]) {
-      const Vec3d d = mesh.vertices()[v] - camera.eye;
+      const std::array<double, 3> p = frame.to_camera(mesh.vertices()[v]);
       const auto row = static_cast<Eigen::Index>(v);
-      polygon.push_back({{dot(d, right), dot(d, up), dot(d, forward)},
+      polygon.push_back({{p[0], p[1], p[2]},
                          {vertex_luminance(row, 0), vertex_luminance(row, 1), vertex_luminance(row, 2)}});
     }
     polygon = clip_near(polygon, near);

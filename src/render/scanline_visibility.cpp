@@ -13,32 +13,6 @@ namespace penumbra::render {
 
 using namespace detail;
 
-ViewFrame::ViewFrame(const Camera& camera)
-    : eye_(camera.eye), width_(camera.width), height_(camera.height) {
-  if (camera.width <= 0 || camera.height <= 0)
-    throw std::invalid_argument("ViewFrame: the image needs a positive size");
-  forward_ = normalized(camera.target - camera.eye);
-  right_ = normalized(cross(forward_, camera.up));
-  up_ = cross(right_, forward_);
-  half_height_ = std::tan(camera.fov_deg * (M_PI / 180) / 2);
-  half_width_ = half_height_ * width_ / height_;
-}
-
-Vec3d ViewFrame::direction(double x, double y) const {
-  const double across = (2 * x / width_ - 1) * half_width_;
-  const double down = (1 - 2 * y / height_) * half_height_;
-  return forward_ + across * right_ + down * up_;
-}
-
-std::optional<std::array<double, 3>> ViewFrame::project(const Vec3d& p) const {
-  const V3 offset = p - eye_;
-  const double depth = dot(offset, forward_);
-  if (depth <= 0) return std::nullopt;
-  const double x = (dot(offset, right_) / depth / half_width_ + 1) * width_ / 2;
-  const double y = (1 - dot(offset, up_) / depth / half_height_) * height_ / 2;
-  return std::array<double, 3>{x, y, depth};
-}
-
 FacePlane face_plane(const Face& face) {
   const V3 normal = to_double(face.normal());
   const double length = std::sqrt(dot(normal, normal));

@@ -16,39 +16,13 @@
 #include <optional>
 #include <vector>
 
+#include "penumbra/scene/camera_frame.h"
 #include "penumbra/scene/scene.h"
 
 namespace penumbra::render {
 
-// The pinhole camera of DESIGN.md as a map from image points to rays.
-class ViewFrame {
- public:
-  // builds forward toward target, right = forward x up, and the image plane at distance 1
-  // spanning the vertical field of view. Precondition: width, height > 0.
-  explicit ViewFrame(const Camera& camera);
-
-  int width() const { return width_; }
-  int height() const { return height_; }
-  const Vec3d& eye() const { return eye_; }
-  const Vec3d& forward() const { return forward_; }
-  const Vec3d& right() const { return right_; }
-  const Vec3d& up() const { return up_; }
-  // half the image plane's width at distance 1.
-  double half_width() const { return half_width_; }
-
-  // returns the direction through image point (x, y), scaled so that its component along
-  // forward is 1: eye + t * direction lies at depth t.
-  Vec3d direction(double x, double y) const;
-
-  // returns the image point (x, y) where p projects and its depth along forward, or {}
-  // when p is not in front of the eye.
-  std::optional<std::array<double, 3>> project(const Vec3d& p) const;
-
- private:
-  Vec3d eye_, forward_, right_, up_;
-  double half_width_, half_height_;
-  int width_, height_;
-};
+// The pinhole camera of DESIGN.md (scene/camera_frame.h).
+using ViewFrame = CameraFrame;
 
 // A face's plane in doubles: unit outward normal n and offset d, n.Q + d = 0.
 struct FacePlane {
