@@ -58,6 +58,18 @@ void rank_candidates(std::vector<std::vector<std::size_t>>& candidates,
   }
 }
 
+// returns the shadows of light light_index before any face is computed: one empty entry
+// per receiver and the pair counts.
+LightShadows empty_result(const Scene& scene, const std::vector<Receiver>& receivers,
+                          std::size_t light_index) {
+  LightShadows result;
+  result.light = light_index;
+  result.faces.resize(receivers.size());
+  result.stats.faces = receivers.size();
+  result.stats.pairs_possible = receivers.size() * (scene.objects.size() - 1);
+  return result;
+}
+
 LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receivers,
                          const std::vector<std::size_t>& rank, std::size_t light_index,
                          const ShadowOptions& options) {
@@ -66,12 +78,8 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
   const LightPosition position = *position_of(light);
   const auto sphere = sphere_of(light, options);
 
-  LightShadows result;
-  result.light = light_index;
-  result.faces.resize(receivers.size());
+  LightShadows result = empty_result(scene, receivers, light_index);
   ShadowStats& stats = result.stats;
-  stats.faces = receivers.size();
-  stats.pairs_possible = receivers.size() * (scene.objects.size() - 1);
   if (sphere) stats.radius = sphere->radius();
 
   // Culling: faces turned away are wholly unlit; faces outside the sphere of
@@ -146,12 +154,8 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   Point3 q1 = to_exact(tube.start), q2 = to_exact(tube.end);
   if (CGAL::compare_xyz(q2, q1) == CGAL::SMALLER) std::swap(q1, q2);
 
-  LightShadows result;
-  result.light = light_index;
-  result.faces.resize(receivers.size());
+  LightShadows result = empty_result(scene, receivers, light_index);
   ShadowStats& stats = result.stats;
-  stats.faces = receivers.size();
-  stats.pairs_possible = receivers.size() * (scene.objects.size() - 1);
 
   std::optional<LightingSphere> sphere;
   const double threshold =
