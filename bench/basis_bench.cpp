@@ -27,7 +27,8 @@ const Scene& room() {
   if (!scene) {
     // Run from the repository's top directory, or point PENUMBRA_SOURCE_DIR at it.
     const char* top = std::getenv("PENUMBRA_SOURCE_DIR");
-    scene = std::make_unique<Scene>(load_scene(std::string(top ? top : ".") + "/fixtures/scenes/basis-room.json"));
+    scene = std::make_unique<Scene>(
+        load_scene(std::string(top ? top : ".") + "/fixtures/scenes/basis-room.json"));
   }
   return *scene;
 }
@@ -44,13 +45,15 @@ basis::BasisOptions room_options() {
 
 const basis::BasisLuminances& room_basis() {
   static std::unique_ptr<basis::BasisLuminances> basis;
-  if (!basis) basis = std::make_unique<basis::BasisLuminances>(basis::compute_basis(room(), room_options()));
+  if (!basis)
+    basis = std::make_unique<basis::BasisLuminances>(basis::compute_basis(room(), room_options()));
   return *basis;
 }
 
 std::size_t block_bytes(const basis::BasisBlock& block) {
-  return 4 * static_cast<std::size_t>(block.is_compressed() ? (block.rows() + block.cols()) * block.rank()
-                                                            : block.rows() * block.cols());
+  return 4 * static_cast<std::size_t>(block.is_compressed()
+                                          ? (block.rows() + block.cols()) * block.rank()
+                                          : block.rows() * block.cols());
 }
 
 void BM_BasisPreprocess(benchmark::State& state) {
@@ -80,7 +83,8 @@ basis::Lighting changed_lighting(const basis::BasisLuminances& basis) {
   lighting[0].colour = {1, 0.85, 0.7};
   const Vec3d axis{-0.6, 0.2, -0.77};
   const auto lid = photometry::make_distribution(
-      nlohmann::json::parse(R"({"cos_power": 20, "spread_deg": 60, "candela": 4000})"), {"bench", "lid", "."});
+      nlohmann::json::parse(R"({"cos_power": 20, "spread_deg": 60, "candela": 4000})"),
+      {"bench", "lid", "."});
   lighting[1].coefficients =
       basis::world_coefficients(*lid, 8, axis, basis::reaimed_c0(axis, basis.lights[1].c0), false);
   return lighting;
@@ -97,13 +101,15 @@ void BM_Relight(benchmark::State& state) {
 // over the patches of |E_relit - E_exact| / max E_exact, and the 99th percentile
 void record_error(benchmark::State& state, const std::string& name, const basis::Relit& relit,
                   const basis::SceneRadiosity& exact) {
-  const Eigen::VectorXd difference = (relit.total.col(0).cast<double>() - exact.total.col(0)).cwiseAbs();
+  const Eigen::VectorXd difference =
+      (relit.total.col(0).cast<double>() - exact.total.col(0)).cwiseAbs();
   const double scale = exact.total.col(0).cwiseAbs().maxCoeff();
   std::vector<double> sorted(difference.data(), difference.data() + difference.size());
   std::sort(sorted.begin(), sorted.end());
   state.counters[name + "_max"] = difference.maxCoeff() / scale;
   state.counters[name + "_p99"] = sorted[sorted.size() * 99 / 100] / scale;
-  state.counters[name + "_rms"] = std::sqrt(difference.squaredNorm() / static_cast<double>(difference.size())) / scale;
+  state.counters[name + "_rms"] =
+      std::sqrt(difference.squaredNorm() / static_cast<double>(difference.size())) / scale;
 }
 
 void BM_RelightError(benchmark::State& state) {
@@ -114,8 +120,8 @@ void BM_RelightError(benchmark::State& state) {
     basis::Lighting plain = basis::default_lighting(basis);
     for (std::size_t k = 0; k < plain.size(); ++k) {
       const PointLight& lamp = std::get<PointLight>(room().lights[k].source);
-      plain[k].coefficients = basis::world_coefficients(*lamp.distribution, basis.lights[k].columns.degree,
-                                                        lamp.axis, lamp.c0, false);
+      plain[k].coefficients = basis::world_coefficients(
+          *lamp.distribution, basis.lights[k].columns.degree, lamp.axis, lamp.c0, false);
     }
     record_error(state, "plain", basis::relight(basis, plain), exact);
     state.counters["t_exact_solve_s"] =

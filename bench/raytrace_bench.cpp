@@ -17,9 +17,9 @@
 #include <memory>
 #include <string>
 
-#include "penumbra/io/tone_map.h"
-#include "penumbra/raytrace/pinhole_camera.h"
+#include "penumbra/base/tone_map.h"
 #include "penumbra/raytrace/render.h"
+#include "penumbra/scene/camera_frame.h"
 #include "penumbra/scene/load_scene.h"
 #include "penumbra/scene/scene.h"
 
@@ -49,13 +49,13 @@ const Scene& figure(int index, int width, int height) {
 
 // traces one ray tree through every pixel centre, serially.
 RayCounts trace_centres(const RayTracer& tracer, const Camera& camera, std::vector<Ray>* log) {
-  const PinholeCamera pinhole(camera);
+  const CameraFrame pinhole(camera);
   RayCounts counts;
   counts.log = log;
   for (int j = 0; j < camera.height; ++j)
     for (int i = 0; i < camera.width; ++i)
       benchmark::DoNotOptimize(
-          tracer.trace(pinhole.eye(), pinhole.direction(i + 0.5, j + 0.5), 0, counts));
+          tracer.trace(pinhole.eye(), pinhole.unit_direction(i + 0.5, j + 0.5), 0, counts));
   return counts;
 }
 
@@ -102,8 +102,8 @@ void parallel_render(benchmark::State& state) {
 
 // the RMS difference of two images in 8-bit sRGB levels at a common exposure.
 double rms_levels(const RenderedImage& image, const RenderedImage& reference) {
-  const auto a = io::to_srgb8(image.pixels, reference.exposure);
-  const auto b = io::to_srgb8(reference.pixels, reference.exposure);
+  const auto a = to_srgb8(image.pixels, reference.exposure);
+  const auto b = to_srgb8(reference.pixels, reference.exposure);
   double sum = 0;
   for (std::size_t k = 0; k < a.size(); ++k) sum += (a[k] - b[k]) * (a[k] - b[k]);
   return std::sqrt(sum / static_cast<double>(a.size()));

@@ -67,7 +67,12 @@ void BM_ShadowsTubeY(benchmark::State& state) {
 
 // the city sizes of the issue, one timed run each
 static void city_sizes(benchmark::internal::Benchmark* benchmark) {
-  benchmark->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+  benchmark->Arg(100)
+      ->Arg(1000)
+      ->Arg(10000)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->Iterations(1);
 }
 
 BENCHMARK(BM_ShadowsLamp)->Apply(city_sizes);

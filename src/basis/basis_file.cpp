@@ -4,8 +4,8 @@
 #include <fstream>
 #include <map>
 
-#include "penumbra/input_error.h"
-#include "penumbra/io/atomic_file.h"
+#include "penumbra/base/atomic_file.h"
+#include "penumbra/base/input_error.h"
 
 namespace penumbra::basis {
 
@@ -21,10 +21,13 @@ struct Array {
   std::string bytes;
 };
 
-std::size_t type_size(const std::string& type) { return type == "f64" ? 8 : 4; }
+std::size_t type_size(const std::string& type) {
+  return type == "f64" ? 8 : 4;
+}
 
 template <typename Scalar>
-Array array_of(const std::string& type, const Scalar* data, std::uint64_t rows, std::uint64_t cols) {
+Array array_of(const std::string& type, const Scalar* data, std::uint64_t rows,
+               std::uint64_t cols) {
   Array array{type, rows, cols, {}};
   array.bytes.assign(reinterpret_cast<const char*>(data), rows * cols * sizeof(Scalar));
   return array;
@@ -38,7 +41,9 @@ Array matrix_array(const std::string& type, const Matrix& matrix) {
                   static_cast<std::uint64_t>(rows.cols()));
 }
 
-nlohmann::json vec(const Vec3d& v) { return {v[0], v[1], v[2]}; }
+nlohmann::json vec(const Vec3d& v) {
+  return {v[0], v[1], v[2]};
+}
 
 const char* kind_name(LightKind kind) {
   return kind == LightKind::point ? "point" : kind == LightKind::linear ? "linear" : "directional";
@@ -61,14 +66,16 @@ class Reader {
       fail("", "not a penumbra basis file (.pbl): wrong magic");
     std::uint64_t header_length = 0;
     std::memcpy(&header_length, content.data() + 8, 8);
-    if (header_length > content.size() - 16) fail("header", "header length beyond the end of the file");
+    if (header_length > content.size() - 16)
+      fail("header", "header length beyond the end of the file");
     try {
       header_ = nlohmann::json::parse(content.substr(16, header_length));
     } catch (const nlohmann::json::exception& error) {
       fail("header", std::string("malformed JSON: ") + error.what());
     }
     if (header_.value("version", 0) != kVersion)
-      fail("version", "unsupported basis file version (this program reads " + std::to_string(kVersion) + ")");
+      fail("version",
+           "unsupported basis file version (this program reads " + std::to_string(kVersion) + ")");
     std::size_t offset = 16 + header_length;
     const nlohmann::json& table = field("arrays");
     if (!table.is_array()) fail("arrays", "must be an array");
@@ -86,7 +93,8 @@ class Reader {
       }
       if (array.type != "f32" && array.type != "f64" && array.type != "u32")
         fail(where + ".type", "unknown type \"" + array.type + "\"");
-      if (array.cols != 0 && array.rows > (content.size() - offset) / array.cols / type_size(array.type))
+      if (array.cols != 0 &&
+          array.rows > (content.size() - offset) / array.cols / type_size(array.type))
         fail(where, "array \"" + name + "\" runs past the end of the file");
       const std::size_t size = array.rows * array.cols * type_size(array.type);
       array.bytes = content.substr(offset, size);
@@ -113,7 +121,8 @@ class Reader {
   template <typename Scalar>
   Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> matrix(const std::string& name,
                                                                const std::string& type,
-                                                               std::int64_t rows, std::int64_t cols) const {
+                                                               std::int64_t rows,
+                                                               std::int64_t cols) const {
     const auto found = arrays_.find(name);
     if (found == arrays_.end()) fail("arrays", "array \"" + name + "\" is missing");
     const Array& array = found->second;
@@ -157,7 +166,9 @@ void write_basis(const std::filesystem::path& path, const BasisLuminances& basis
   const PatchMesh& mesh = basis.mesh;
   const std::size_t n = mesh.size(), vertex_count = mesh.vertices().size();
   std::vector<std::pair<std::string, Array>> arrays;
-  const auto add = [&](const std::string& name, Array array) { arrays.emplace_back(name, std::move(array)); };
+  const auto add = [&](const std::string& name, Array array) {
+    arrays.emplace_back(name, std::move(array));
+  };
 
   add("vertices", array_of("f64", mesh.vertices().data()->data(), vertex_count, 3));
   std::vector<std::uint32_t> object, face, offsets{0}, indices;
@@ -187,7 +198,8 @@ void write_basis(const std::filesystem::path& path, const BasisLuminances& basis
     const std::string prefix = "light" + std::to_string(k);
     nlohmann::json blocks = nlohmann::json::object();
     const auto add_block = [&](const std::string& name, const BasisBlock& block) {
-      blocks[name] = {{"compressed", block.is_compressed()}, {"rank", block.rank()}, {"error", block.error()}};
+      blocks[name] = {
+          {"compressed", block.is_compressed()}, {"rank", block.rank()}, {"error", block.error()}};
       if (block.is_compressed()) {
         add(prefix + "." + name + ".left", matrix_array("f32", block.left()));
         add(prefix + "." + name + ".right", matrix_array("f32", block.right()));
@@ -210,8 +222,9 @@ void write_basis(const std::filesystem::path& path, const BasisLuminances& basis
                       {"c0", vec(light.c0)},
                       {"lid", light.lid},
                       {"lid_base", light.lid_base},
-                      {"coefficients", std::vector<double>(light.coefficients.data(),
-                                                           light.coefficients.data() + light.coefficients.size())},
+                      {"coefficients",
+                       std::vector<double>(light.coefficients.data(),
+                                           light.coefficients.data() + light.coefficients.size())},
                       {"blocks", blocks}});
   }
   nlohmann::json header = {
@@ -224,11 +237,13 @@ void write_basis(const std::filesystem::path& path, const BasisLuminances& basis
       {"patch_size", basis.options.patch_size},
       {"degree", basis.options.degree},
       {"form_factors",
-       {{"method", basis.options.form_factors.method == FormFactorMethod::rays ? "rays" : "analytic"},
+       {{"method",
+         basis.options.form_factors.method == FormFactorMethod::rays ? "rays" : "analytic"},
         {"rays", basis.options.form_factors.rays},
         {"seed", basis.options.form_factors.seed},
         {"entries", basis.form_factor_entries}}},
-      {"radiosity", {{"tolerance", basis.options.radiosity.tolerance}, {"iterations", basis.iterations}}},
+      {"radiosity",
+       {{"tolerance", basis.options.radiosity.tolerance}, {"iterations", basis.iterations}}},
       {"compression", basis.options.compression},
       {"sigma", basis.options.sigma},
       {"objects", basis.object_names},
@@ -240,15 +255,16 @@ void write_basis(const std::filesystem::path& path, const BasisLuminances& basis
         {"compress", basis.timings.compress_s}}},
       {"lights", lights}};
   if (basis.camera)
-    header["camera"] = {{"eye", vec(basis.camera->eye)},       {"target", vec(basis.camera->target)},
-                        {"up", vec(basis.camera->up)},         {"fov_deg", basis.camera->fov_deg},
-                        {"width", basis.camera->width},        {"height", basis.camera->height}};
+    header["camera"] = {{"eye", vec(basis.camera->eye)}, {"target", vec(basis.camera->target)},
+                        {"up", vec(basis.camera->up)},   {"fov_deg", basis.camera->fov_deg},
+                        {"width", basis.camera->width},  {"height", basis.camera->height}};
   nlohmann::json table = nlohmann::json::array();
   for (const auto& [name, array] : arrays)
-    table.push_back({{"name", name}, {"type", array.type}, {"rows", array.rows}, {"cols", array.cols}});
+    table.push_back(
+        {{"name", name}, {"type", array.type}, {"rows", array.rows}, {"cols", array.cols}});
   header["arrays"] = table;
   const std::string text = header.dump();
-  io::write_atomically(path, [&](std::ostream& out) {
+  write_atomically(path, [&](std::ostream& out) {
     out.write(kMagic, 8);
     const std::uint64_t length = text.size();
     out.write(reinterpret_cast<const char*>(&length), 8);
@@ -272,7 +288,8 @@ BasisLuminances read_basis(const std::filesystem::path& path) {
   basis.options.degree = header.value("degree", 0);
   basis.options.compression = header.value("compression", 0.0);
   basis.options.sigma = header.value("sigma", true);
-  if (header.contains("objects")) basis.object_names = reader.get<std::vector<std::string>>(header["objects"], "objects");
+  if (header.contains("objects"))
+    basis.object_names = reader.get<std::vector<std::string>>(header["objects"], "objects");
   basis.iterations = header.contains("radiosity") ? header["radiosity"].value("iterations", 0) : 0;
 
   const Eigen::MatrixXd vertices = reader.matrix<double>("vertices", "f64", vertex_count, 3);
@@ -303,10 +320,13 @@ BasisLuminances read_basis(const std::filesystem::path& path) {
       reader.fail("patch_vertex_offsets", "offsets out of range at patch " + std::to_string(i));
     for (std::uint32_t k = offsets(i); k < offsets(i + 1); ++k) {
       if (indices(k) >= vertex_count)
-        reader.fail("patch_vertex_indices", "vertex index out of range at patch " + std::to_string(i));
+        reader.fail("patch_vertex_indices",
+                    "vertex index out of range at patch " + std::to_string(i));
       patch.vertices.push_back(indices(k));
     }
-    if (patch.vertices.size() < 3) reader.fail("patch_vertex_offsets", "patch " + std::to_string(i) + " has fewer than 3 vertices");
+    if (patch.vertices.size() < 3)
+      reader.fail("patch_vertex_offsets",
+                  "patch " + std::to_string(i) + " has fewer than 3 vertices");
   }
   basis.mesh = PatchMesh(std::move(points), std::move(patches));
 
@@ -322,20 +342,27 @@ BasisLuminances read_basis(const std::filesystem::path& path) {
     BasisLight light;
     light.columns.name = reader.get<std::string>(member("name"), where + ".name");
     const auto kind = reader.get<std::string>(member("kind"), where + ".kind");
-    light.columns.kind = kind == "point" ? LightKind::point : kind == "linear" ? LightKind::linear : LightKind::directional;
+    light.columns.kind = kind == "point"    ? LightKind::point
+                         : kind == "linear" ? LightKind::linear
+                                            : LightKind::directional;
     light.columns.degree = reader.get<int>(member("degree"), where + ".degree");
-    light.columns.first_column = reader.get<Eigen::Index>(member("first_column"), where + ".first_column");
+    light.columns.first_column =
+        reader.get<Eigen::Index>(member("first_column"), where + ".first_column");
     light.columns.count = reader.get<Eigen::Index>(member("count"), where + ".count");
-    if (light.columns.count < 1 || light.columns.count > 100000) reader.fail(where + ".count", "out of range");
+    if (light.columns.count < 1 || light.columns.count > 100000)
+      reader.fail(where + ".count", "out of range");
     light.position = vec_of(reader, member("position"), where + ".position");
     light.axis = vec_of(reader, member("axis"), where + ".axis");
     light.c0 = vec_of(reader, member("c0"), where + ".c0");
     light.lid = entry.value("lid", nlohmann::json());
     light.lid_base = entry.value("lid_base", "");
-    const auto coefficients = reader.get<std::vector<double>>(member("coefficients"), where + ".coefficients");
+    const auto coefficients =
+        reader.get<std::vector<double>>(member("coefficients"), where + ".coefficients");
     if (static_cast<Eigen::Index>(coefficients.size()) != light.columns.count)
-      reader.fail(where + ".coefficients", "needs " + std::to_string(light.columns.count) + " numbers");
-    light.coefficients = Eigen::Map<const Eigen::VectorXd>(coefficients.data(), light.columns.count);
+      reader.fail(where + ".coefficients",
+                  "needs " + std::to_string(light.columns.count) + " numbers");
+    light.coefficients =
+        Eigen::Map<const Eigen::VectorXd>(coefficients.data(), light.columns.count);
     const std::string prefix = "light" + std::to_string(k);
     const nlohmann::json& blocks = member("blocks");
     const auto info = [&](const std::string& name) {
@@ -344,7 +371,8 @@ BasisLuminances read_basis(const std::filesystem::path& path) {
     light.direct = reader.block(prefix + ".direct", info("direct"), n, light.columns.count);
     for (int c = 0; c < basis.channels; ++c) {
       const std::string total = "total" + std::to_string(c), vertex = "vertex" + std::to_string(c);
-      light.total.push_back(reader.block(prefix + "." + total, info(total), n, light.columns.count));
+      light.total.push_back(
+          reader.block(prefix + "." + total, info(total), n, light.columns.count));
       light.vertex_luminance.push_back(
           reader.block(prefix + "." + vertex, info(vertex), vertex_count, light.columns.count));
     }

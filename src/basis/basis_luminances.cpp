@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/relight.h"
 #include "penumbra/scene/scene.h"
 #include "radiosity_setup.h"
@@ -36,7 +37,7 @@ BasisLuminances compute_basis(const Scene& scene, const BasisOptions& options) {
   auto start = std::chrono::steady_clock::now();
   Eigen::MatrixXd direct;
   {
-    io::Progress progress("direct light", setup.mesh.size());
+    Progress progress("direct light", setup.mesh.size());
     direct = direct_illuminance(scene, setup.mesh, layout, options.parallel, progress_of(progress));
   }
   basis.timings.direct_s = seconds_since(start);
@@ -51,13 +52,13 @@ BasisLuminances compute_basis(const Scene& scene, const BasisOptions& options) {
       light.c0 = lamp->c0;
       light.lid = lamp->lid;
       light.lid_base = std::filesystem::absolute(scene.file).parent_path().string();
-      light.coefficients =
-          world_coefficients(*lamp->distribution, columns.degree, lamp->axis, lamp->c0, options.sigma);
+      light.coefficients = world_coefficients(*lamp->distribution, columns.degree, lamp->axis,
+                                              lamp->c0, options.sigma);
     } else {
       light.coefficients = Eigen::VectorXd::Ones(1);
     }
-    light.direct = BasisBlock::compressed(direct.middleCols(light.columns.first_column, columns.count),
-                                          options.compression);
+    light.direct = BasisBlock::compressed(
+        direct.middleCols(light.columns.first_column, columns.count), options.compression);
     basis.lights.push_back(std::move(light));
   }
   for (int channel = 0; channel < basis.channels; ++channel) {
@@ -67,7 +68,8 @@ BasisLuminances compute_basis(const Scene& scene, const BasisOptions& options) {
     basis.timings.solve_s += seconds_since(start);
     start = std::chrono::steady_clock::now();
     // luminance of a diffuse patch: rho E / pi (section 3.4), averaged to the vertices
-    const Eigen::MatrixXd luminance = setup.reflectance(channel).asDiagonal() * solved.illuminance / M_PI;
+    const Eigen::MatrixXd luminance =
+        setup.reflectance(channel).asDiagonal() * solved.illuminance / pi;
     for (BasisLight& light : basis.lights) {
       const Eigen::Index first = light.columns.first_column, count = light.columns.count;
       light.total.push_back(

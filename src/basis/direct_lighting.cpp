@@ -1,9 +1,9 @@
 #include "penumbra/basis/direct_lighting.h"
 
+#include "penumbra/base/parallel.h"
 #include "penumbra/basis/patch_mesh.h"
 #include "penumbra/basis/spherical_harmonics.h"
 #include "penumbra/illuminance/scene_illuminance.h"
-#include "penumbra/parallel.h"
 #include "penumbra/scene/scene.h"
 
 namespace penumbra::basis {
@@ -13,7 +13,8 @@ using namespace vector_ops;
 namespace {
 
 // runs compute(i) for every patch, in parallel when asked, reporting each to progress.
-void for_each_patch(std::size_t count, bool parallel, const std::function<void(std::size_t)>& progress,
+void for_each_patch(std::size_t count, bool parallel,
+                    const std::function<void(std::size_t)>& progress,
                     const std::function<void(std::size_t)>& compute) {
   for_each_index(count, parallel, [&](std::size_t i) {
     compute(i);
@@ -56,7 +57,8 @@ Eigen::MatrixXd direct_illuminance(const Scene& scene, const PatchMesh& mesh,
     if (auto* lamp = std::get_if<PointLight>(&light.source))
       lamp->distribution = photometry::make_isotropic(1);
   const illuminance::IlluminanceSolver solver(isotropic);
-  const Eigen::Index columns = layout.empty() ? 0 : layout.back().first_column + layout.back().count;
+  const Eigen::Index columns =
+      layout.empty() ? 0 : layout.back().first_column + layout.back().count;
   Eigen::MatrixXd direct = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(mesh.size()), columns);
   for_each_patch(mesh.size(), parallel, progress, [&](std::size_t i) {
     const Patch& patch = mesh.patches()[i];
@@ -72,7 +74,8 @@ Eigen::MatrixXd direct_illuminance(const Scene& scene, const PatchMesh& mesh,
       const Vec3d& position = std::get<PointLight>(scene.lights[k].source).position;
       const Vec3d w = patch.centre - position;
       direct.block(row, light.first_column, 1, light.count) =
-          value * real_spherical_harmonics(light.degree, Eigen::Vector3d(w[0], w[1], w[2])).transpose();
+          value *
+          real_spherical_harmonics(light.degree, Eigen::Vector3d(w[0], w[1], w[2])).transpose();
     }
   });
   return direct;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/gauss_legendre.h"
 #include "penumbra/basis/spherical_harmonics.h"
 #include "penumbra/photometry/analytic_distribution.h"
@@ -14,7 +15,6 @@ namespace penumbra::basis {
 namespace {
 
 using photometry::Distribution;
-using photometry::kPi;
 
 std::vector<double> uniform(double end, int intervals) {
   std::vector<double> nodes;
@@ -52,7 +52,7 @@ void integrate_sphere(const DistributionBreakpoints& breakpoints, bool symmetric
     for (std::size_t a = 0; a < g.nodes.size(); ++a) {
       const double sine_weight = g.weights[a] * std::sin(g.nodes[a]);
       if (symmetric) {
-        visit(g.nodes[a], 0.0, 2 * kPi * sine_weight);
+        visit(g.nodes[a], 0.0, 2 * pi * sine_weight);
         continue;
       }
       for (std::size_t j = 0; j + 1 < breakpoints.c.size(); ++j) {
@@ -90,19 +90,19 @@ DistributionBreakpoints breakpoints_of(const Distribution& distribution) {
   } else if (const auto* spot =
                  dynamic_cast<const photometry::CosPowerDistribution*>(&distribution)) {
     breakpoints.gamma = {spot->spread()};
-    breakpoints.c = {0, 2 * kPi};
+    breakpoints.c = {0, 2 * pi};
     breakpoints.c_exact = true;
   } else if (dynamic_cast<const photometry::CardioidDistribution*>(&distribution) ||
              distribution.symmetry() == photometry::Symmetry::isotropic) {
-    breakpoints.c = {0, 2 * kPi};
+    breakpoints.c = {0, 2 * pi};
     breakpoints.c_exact = true;
   } else {
-    breakpoints.gamma = uniform(kPi, 36);
-    breakpoints.c = uniform(2 * kPi, 360);
+    breakpoints.gamma = uniform(pi, 36);
+    breakpoints.c = uniform(2 * pi, 360);
   }
   breakpoints.gamma = normalised_breakpoints(std::move(breakpoints.gamma));
   if (is_rotationally_symmetric(distribution)) {
-    breakpoints.c = {0, 2 * kPi};
+    breakpoints.c = {0, 2 * pi};
     breakpoints.c_exact = true;
   }
   return breakpoints;
@@ -119,7 +119,7 @@ AxialProfile axial_profile(const Distribution& distribution,
     for (std::size_t j = 0; j + 1 < c.size(); ++j)
       sum += 0.5 * (c[j + 1] - c[j]) *
              (distribution.intensity(gamma, c[j]) + distribution.intensity(gamma, c[j + 1]));
-    return sum / (2 * kPi);
+    return sum / (2 * pi);
   };
 }
 
@@ -170,7 +170,7 @@ ApproximationError approximation_error(
     const double difference = distribution.intensity(gamma, c) - approximation(gamma, c);
     sum += weight * difference * difference;
   });
-  error.rms_cd = std::sqrt(std::max(0.0, sum) / (4 * kPi));
+  error.rms_cd = std::sqrt(std::max(0.0, sum) / (4 * pi));
   return error;
 }
 

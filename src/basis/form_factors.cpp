@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
+#include "penumbra/base/parallel.h"
+#include "penumbra/base/random.h"
 #include "penumbra/basis/patch_mesh.h"
-#include "penumbra/parallel.h"
 #include "penumbra/raytrace/embree_scene.h"
 #include "penumbra/scene/scene.h"
 
@@ -15,23 +17,6 @@ using namespace vector_ops;
 namespace {
 
 using Row = std::vector<std::pair<std::int64_t, double>>;
-
-// A deterministic generator per patch: SplitMix64 of (seed, patch), so the rows do not
-// depend on the order in which threads take them.
-class PatchRandom {
- public:
-  PatchRandom(std::uint64_t seed, std::uint64_t patch) : state_(seed * 0x9E3779B97F4A7C15ULL ^ (patch + 1)) {}
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
- private:
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  std::uint64_t state_;
-};
 
 // An orthonormal frame (t, b, n) around unit n (Duff et al. 2017, branchless).
 void tangent_frame(const Vec3d& n, Vec3d& t, Vec3d& b) {
@@ -84,7 +69,8 @@ SphereNormals sphere_normals(const Scene& scene) {
   SphereNormals normals(scene.objects.size());
   for (std::size_t k = 0; k < scene.objects.size(); ++k)
     if (scene.objects[k].sphere)
-      for (const Face& face : scene.objects[k].solid.faces()) normals[k].push_back(normalized(to_double(face.normal())));
+      for (const Face& face : scene.objects[k].solid.faces())
+        normals[k].push_back(normalized(to_double(face.normal())));
   return normals;
 }
 
@@ -106,11 +92,13 @@ std::optional<std::uint32_t> hit_patch(const SphereNormals& spheres, const Patch
 }
 
 // Stratified cosine-weighted rays from patch i (Malley's method).
-Row ray_row(const SphereNormals& spheres, const PatchMesh& mesh, const raytrace::EmbreeScene& embree,
-            std::size_t i, int strata, std::uint64_t seed, double offset) {
+Row ray_row(const SphereNormals& spheres, const PatchMesh& mesh,
+            const raytrace::EmbreeScene& embree, std::size_t i, int strata, std::uint64_t seed,
+            double offset) {
   const Patch& patch = mesh.patches()[i];
   const PatchMap on_patch(mesh, patch);
-  PatchRandom random(seed, i);
+  // One stream per patch, so the rows do not depend on the order threads take them.
+  SplitMix64 random(seed * SplitMix64::golden_gamma ^ (i + 1));
   Vec3d t, b;
   tangent_frame(patch.normal, t, b);
   std::vector<std::int64_t> hits;
@@ -122,19 +110,19 @@ Row ray_row(const SphereNormals& spheres, const PatchMesh& mesh, const raytrace:
   for (int k = 0; k < rays; ++k) origin_stratum[static_cast<std::size_t>(k)] = k;
   for (int k = rays - 1; k > 0; --k)
     std::swap(origin_stratum[static_cast<std::size_t>(k)],
-              origin_stratum[static_cast<std::size_t>(std::min(k, static_cast<int>(random.uniform() * (k + 1))))]);
+              origin_stratum[static_cast<std::size_t>(
+                  std::min(k, static_cast<int>(random.uniform() * (k + 1))))]);
   for (int a = 0; a < strata; ++a)
     for (int c = 0; c < strata; ++c) {
-      const double r2 = (a + random.uniform()) / strata;  // stratified in r^2 and phi:
-      const double phi = 2 * M_PI * (c + random.uniform()) / strata;  // equal-area on the disk
+      const double r2 = (a + random.uniform()) / strata;            // stratified in r^2 and phi:
+      const double phi = 2 * pi * (c + random.uniform()) / strata;  // equal-area on the disk
       const double r = std::sqrt(r2);
       const Vec3d direction = r * std::cos(phi) * t + r * std::sin(phi) * b +
                               std::sqrt(std::max(0.0, 1 - r2)) * patch.normal;
       const int o = origin_stratum[static_cast<std::size_t>(a * strata + c)];
       const Vec3d origin = on_patch((o / strata + random.uniform()) / strata,
                                     (o % strata + random.uniform()) / strata);
-      raytrace::Ray ray{origin, direction, offset,
-                        std::numeric_limits<double>::infinity()};
+      raytrace::Ray ray{origin, direction, offset, std::numeric_limits<double>::infinity()};
       // a ray leaving a face outward cannot meet that face again: a hit on it is single-
       // precision traversal finding the origin's own plane, and the ray goes on past it.
       for (int attempt = 0; attempt < 4; ++attempt) {
@@ -216,7 +204,7 @@ double point_polygon_form_factor(const Vec3d& point, const Vec3d& normal,
     const double gamma = std::atan2(s, dot(a, b));
     sum += gamma * dot(normal, c) / s;
   }
-  return std::abs(sum) / (2 * M_PI);
+  return std::abs(sum) / (2 * pi);
 }
 
 FormFactorMatrix form_factors(const Scene& scene, const PatchMesh& mesh,
@@ -241,8 +229,7 @@ FormFactorMatrix form_factors(const Scene& scene, const PatchMesh& mesh,
   for (const Row& row : rows) sizes.push_back(static_cast<std::int64_t>(row.size()));
   matrix.reserve(sizes);
   for (std::size_t i = 0; i < rows.size(); ++i)
-    for (const auto& [j, value] : rows[i])
-      matrix.insert(static_cast<std::int64_t>(i), j) = value;
+    for (const auto& [j, value] : rows[i]) matrix.insert(static_cast<std::int64_t>(i), j) = value;
   matrix.makeCompressed();
   return matrix;
 }

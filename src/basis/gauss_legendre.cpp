@@ -2,11 +2,10 @@
 
 #include <cmath>
 #include <stdexcept>
+#include "penumbra/base/numbers.h"
 
 namespace penumbra::basis {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct LegendreValue {
   double value;       // P_n(x)
@@ -35,7 +34,7 @@ QuadratureRule gauss_legendre(int points) {
   rule.weights.resize(points);
   // The rule is symmetric: find the nonnegative half, mirror the rest.
   for (int i = 1; i <= (points + 1) / 2; ++i) {
-    double x = std::cos(kPi * (i - 0.25) / (points + 0.5));
+    double x = std::cos(pi * (i - 0.25) / (points + 0.5));
     LegendreValue p{};
     for (int iteration = 0; iteration < 100; ++iteration) {
       p = legendre_with_derivative(points, x);

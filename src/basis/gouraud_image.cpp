@@ -34,7 +34,8 @@ std::vector<CameraVertex> clip_near(const std::vector<CameraVertex>& polygon, do
     const CameraVertex& a = polygon[k];
     const CameraVertex& b = polygon[(k + 1) % polygon.size()];
     if (a.p[2] >= near) out.push_back(a);
-    if ((a.p[2] >= near) != (b.p[2] >= near)) out.push_back(lerp(a, b, (near - a.p[2]) / (b.p[2] - a.p[2])));
+    if ((a.p[2] >= near) != (b.p[2] >= near))
+      out.push_back(lerp(a, b, (near - a.p[2]) / (b.p[2] - a.p[2])));
   }
   return out;
 }
@@ -66,8 +67,9 @@ GouraudImage gouraud_image(const PatchMesh& mesh, const Eigen::MatrixX3f& vertex
     for (std::uint32_t v : triangles[t]) {
       const std::array<double, 3> p = frame.to_camera(mesh.vertices()[v]);
       const auto row = static_cast<Eigen::Index>(v);
-      polygon.push_back({{p[0], p[1], p[2]},
-                         {vertex_luminance(row, 0), vertex_luminance(row, 1), vertex_luminance(row, 2)}});
+      polygon.push_back(
+          {{p[0], p[1], p[2]},
+           {vertex_luminance(row, 0), vertex_luminance(row, 1), vertex_luminance(row, 2)}});
     }
     polygon = clip_near(polygon, near);
     if (polygon.size() < 3) continue;
@@ -92,9 +94,11 @@ GouraudImage gouraud_image(const PatchMesh& mesh, const Eigen::MatrixX3f& vertex
       const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
       if (area == 0) continue;
       const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x, b.x, c.x}))));
-      const int x1 = std::min(camera.width - 1, static_cast<int>(std::ceil(std::max({a.x, b.x, c.x}))));
+      const int x1 =
+          std::min(camera.width - 1, static_cast<int>(std::ceil(std::max({a.x, b.x, c.x}))));
       const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y, b.y, c.y}))));
-      const int y1 = std::min(camera.height - 1, static_cast<int>(std::ceil(std::max({a.y, b.y, c.y}))));
+      const int y1 =
+          std::min(camera.height - 1, static_cast<int>(std::ceil(std::max({a.y, b.y, c.y}))));
       for (int j = y0; j <= y1; ++j)
         for (int i = x0; i <= x1; ++i) {
           const double px = i + 0.5, py = j + 0.5;

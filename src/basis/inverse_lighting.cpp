@@ -3,16 +3,17 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/legendre_series.h"
-#include "penumbra/basis/scene_radiosity.h"
 #include "penumbra/basis/nonnegative_least_squares.h"
+#include "penumbra/basis/scene_radiosity.h"
 #include "penumbra/basis/sigma_factors.h"
 
 namespace penumbra::basis {
 
-DistributionFit fit_distribution(const BasisLuminances& basis, const Lighting& lighting, std::size_t light,
-                                 const Vec3d& axis, const std::vector<FitTarget>& targets, int intervals,
-                                 bool sigma) {
+DistributionFit fit_distribution(const BasisLuminances& basis, const Lighting& lighting,
+                                 std::size_t light, const Vec3d& axis,
+                                 const std::vector<FitTarget>& targets, int intervals, bool sigma) {
   const BasisLight& lamp = basis.lights.at(light);
   if (lamp.columns.kind != LightKind::point) throw std::invalid_argument("fit: not a point light");
   if (targets.empty()) throw std::invalid_argument("fit: no targets");
@@ -30,12 +31,14 @@ DistributionFit fit_distribution(const BasisLuminances& basis, const Lighting& l
              photometric(rest.total.row(targets[static_cast<std::size_t>(t)].patch).cast<double>());
 
   // T: Legendre weights of each hat function (breakpoints at the control angles)
-  const double step = M_PI / intervals;
+  const double step = pi / intervals;
   std::vector<double> breakpoints;
   for (int k = 0; k <= intervals; ++k) breakpoints.push_back(k * step);
   Eigen::MatrixXd T(degree + 1, intervals + 1);
   for (int k = 0; k <= intervals; ++k) {
-    const auto hat = [&](double gamma) { return std::max(0.0, 1 - std::abs(gamma - k * step) / step); };
+    const auto hat = [&](double gamma) {
+      return std::max(0.0, 1 - std::abs(gamma - k * step) / step);
+    };
     const std::vector<double> w = legendre_weights(hat, degree, breakpoints);
     for (int l = 0; l <= degree; ++l) T(l, k) = w[static_cast<std::size_t>(l)];
   }
@@ -51,7 +54,8 @@ DistributionFit fit_distribution(const BasisLuminances& basis, const Lighting& l
   const LightSetting& own = lighting[light];
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(rows, lamp.columns.count);
   for (int c = 0; c < 3; ++c) {
-    const Eigen::MatrixXf block = lamp.total[static_cast<std::size_t>(basis.channels == 1 ? 0 : c)].full();
+    const Eigen::MatrixXf block =
+        lamp.total[static_cast<std::size_t>(basis.channels == 1 ? 0 : c)].full();
     const double gain = own.scale * own.colour[static_cast<std::size_t>(c)] * kLuminanceWeights[c];
     for (Eigen::Index t = 0; t < rows; ++t)
       B.row(t) += gain * block.row(targets[static_cast<std::size_t>(t)].patch).cast<double>();

@@ -2,13 +2,10 @@
 
 #include <cmath>
 #include <stdexcept>
+#include "penumbra/base/numbers.h"
 
 namespace penumbra::basis {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
+namespace {}  // namespace
 
 LegendreWeightEditor::LegendreWeightEditor(int degree, std::vector<double> control_intensities)
     : degree_(degree), controls_(std::move(control_intensities)) {
@@ -16,7 +13,7 @@ LegendreWeightEditor::LegendreWeightEditor(int degree, std::vector<double> contr
   if (controls_.size() < 2)
     throw std::invalid_argument("LegendreWeightEditor: needs at least two control points");
   const int m = intervals();
-  const double spacing = kPi / m;
+  const double spacing = pi / m;
   table_.resize(controls_.size() * (degree + 1));
   for (int k = 0; k <= m; ++k) {
     const double gamma = control_angle(k);
@@ -36,12 +33,12 @@ LegendreWeightEditor LegendreWeightEditor::sampled(const AxialProfile& intensity
                                                    int intervals) {
   if (intervals < 1) throw std::invalid_argument("LegendreWeightEditor: intervals must be >= 1");
   std::vector<double> controls(intervals + 1);
-  for (int k = 0; k <= intervals; ++k) controls[k] = intensity(kPi * k / intervals);
+  for (int k = 0; k <= intervals; ++k) controls[k] = intensity(pi * k / intervals);
   return LegendreWeightEditor(degree, std::move(controls));
 }
 
 double LegendreWeightEditor::control_angle(int k) const {
-  return kPi * k / intervals();
+  return pi * k / intervals();
 }
 
 std::vector<double> LegendreWeightEditor::recomputed_weights() const {

@@ -4,15 +4,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/gauss_legendre.h"
 #include "penumbra/basis/sigma_factors.h"
 
 namespace penumbra::basis {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<double> legendre_polynomials(int degree, double x) {
   if (degree < 0) throw std::invalid_argument("legendre_polynomials: negative degree");
@@ -53,15 +50,15 @@ LegendreSeries LegendreSeries::sigma_smoothed() const {
 }
 
 double LegendreSeries::flux() const {
-  return 4 * kPi * weights_[0];
+  return 4 * pi * weights_[0];
 }
 
 std::vector<double> normalised_breakpoints(std::vector<double> breakpoints) {
   breakpoints.erase(std::remove_if(breakpoints.begin(), breakpoints.end(),
-                                   [](double b) { return !(b > 0 && b < kPi); }),
+                                   [](double b) { return !(b > 0 && b < pi); }),
                     breakpoints.end());
   breakpoints.push_back(0);
-  breakpoints.push_back(kPi);
+  breakpoints.push_back(pi);
   std::sort(breakpoints.begin(), breakpoints.end());
   breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end()), breakpoints.end());
   return breakpoints;

@@ -140,7 +140,8 @@ PatchMesh PatchMesh::subdivide(const Scene& scene, double patch_size) {
           patch.reflectance = reflectance;
           for (const Point2d& p : cell) {
             const std::uint32_t id = vertex_of(p);
-            if (patch.vertices.empty() || (patch.vertices.back() != id && patch.vertices.front() != id))
+            if (patch.vertices.empty() ||
+                (patch.vertices.back() != id && patch.vertices.front() != id))
               patch.vertices.push_back(id);
           }
           if (patch.vertices.size() < 3) continue;
@@ -205,7 +206,8 @@ std::optional<std::uint32_t> PatchMesh::locate(std::uint32_t object, std::uint32
   };
   const int a = cell_index(dot(d, grid.u), grid.u0, grid.du, grid.nu);
   const int b = cell_index(dot(d, grid.v), grid.v0, grid.dv, grid.nv);
-  const std::int64_t direct = grid.cells[static_cast<std::size_t>(a) + grid.nu * static_cast<std::size_t>(b)];
+  const std::int64_t direct =
+      grid.cells[static_cast<std::size_t>(a) + grid.nu * static_cast<std::size_t>(b)];
   if (direct >= 0) return static_cast<std::uint32_t>(direct);
   // a point on the face whose cell kept no patch (a cell clipped to nothing by rounding):
   // the nearest patch centre among the neighbouring cells.
@@ -213,11 +215,13 @@ std::optional<std::uint32_t> PatchMesh::locate(std::uint32_t object, std::uint32
   double best_distance = 0;
   for (int bb = std::max(0, b - 1); bb <= std::min(grid.nv - 1, b + 1); ++bb)
     for (int aa = std::max(0, a - 1); aa <= std::min(grid.nu - 1, a + 1); ++aa) {
-      const std::int64_t p = grid.cells[static_cast<std::size_t>(aa) + grid.nu * static_cast<std::size_t>(bb)];
+      const std::int64_t p =
+          grid.cells[static_cast<std::size_t>(aa) + grid.nu * static_cast<std::size_t>(bb)];
       if (p < 0) continue;
       const Vec3d to = patches_[static_cast<std::size_t>(p)].centre - point;
       const double distance = dot(to, to);
-      if (!best || distance < best_distance) best = static_cast<std::uint32_t>(p), best_distance = distance;
+      if (!best || distance < best_distance)
+        best = static_cast<std::uint32_t>(p), best_distance = distance;
     }
   return best;
 }
@@ -230,7 +234,8 @@ std::optional<std::uint32_t> PatchMesh::nearest_patch(const Vec3d& point, double
     if (std::abs(dot(point - patch.centre, patch.normal)) > tolerance) continue;
     const Vec3d to = patch.centre - point;
     const double distance = dot(to, to);
-    if (!best || distance < best_distance) best = static_cast<std::uint32_t>(p), best_distance = distance;
+    if (!best || distance < best_distance)
+      best = static_cast<std::uint32_t>(p), best_distance = distance;
   }
   return best;
 }

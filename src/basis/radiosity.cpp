@@ -1,7 +1,6 @@
 #include "penumbra/basis/radiosity.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "penumbra/base/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,13 +43,12 @@ RadiosityResult solve_radiosity(const FormFactorMatrix& F, const Eigen::VectorXd
   };
   for (result.iterations = 0; result.iterations < options.max_iterations;) {
     exitance = reflectance.asDiagonal() * current;  // B_j = rho_j E_j
-    if (options.parallel)
-      tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, n, 64),
-                        [&](const tbb::blocked_range<Eigen::Index>& range) {
-                          sweep(range.begin(), range.end());
-                        });
-    else
-      sweep(0, n);
+    for_each_range(
+        static_cast<std::size_t>(n), options.parallel,
+        [&](std::size_t begin, std::size_t end) {
+          sweep(static_cast<Eigen::Index>(begin), static_cast<Eigen::Index>(end));
+        },
+        64);
     ++result.iterations;
     const Eigen::RowVectorXd change = (next - current).cwiseAbs().colwise().maxCoeff();
     result.last_change = n == 0 ? 0 : (change.array() / column_scale(next).array()).maxCoeff();

@@ -1,6 +1,6 @@
 #include "radiosity_setup.h"
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 #include "penumbra/scene/scene.h"
 
 namespace penumbra::basis::detail {
@@ -9,14 +9,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::function<void(std::size_t)> progress_of(io::Progress& progress) {
+std::function<void(std::size_t)> progress_of(Progress& progress) {
   return [&progress](std::size_t steps) { progress.advance(steps); };
 }
 
 Eigen::VectorXd RadiositySetup::reflectance(int channel) const {
   Eigen::VectorXd rho(static_cast<Eigen::Index>(mesh.size()));
   for (std::size_t i = 0; i < mesh.size(); ++i)
-    rho[static_cast<Eigen::Index>(i)] = mesh.patches()[i].reflectance[static_cast<std::size_t>(channel)];
+    rho[static_cast<Eigen::Index>(i)] =
+        mesh.patches()[i].reflectance[static_cast<std::size_t>(channel)];
   return rho;
 }
 
@@ -32,7 +33,7 @@ RadiositySetup prepare_radiosity(const Scene& scene, const BasisOptions& options
   setup.timings.mesh_s = seconds_since(start);
   start = std::chrono::steady_clock::now();
   {
-    io::Progress progress("form factors", setup.mesh.size());
+    Progress progress("form factors", setup.mesh.size());
     FormFactorOptions form = options.form_factors;
     form.parallel = options.parallel;
     setup.F = form_factors(scene, setup.mesh, form, progress_of(progress));
@@ -46,8 +47,8 @@ RadiositySetup prepare_radiosity(const Scene& scene, const BasisOptions& options
   return setup;
 }
 
-RadiosityResult solve_channel(const RadiositySetup& setup, int channel, const Eigen::MatrixXd& direct,
-                              const BasisOptions& options) {
+RadiosityResult solve_channel(const RadiositySetup& setup, int channel,
+                              const Eigen::MatrixXd& direct, const BasisOptions& options) {
   RadiosityOptions radiosity = options.radiosity;
   radiosity.parallel = options.parallel;
   return solve_radiosity(setup.F, setup.reflectance(channel), direct, radiosity);

@@ -6,8 +6,8 @@
 #include <chrono>
 #include <functional>
 
+#include "penumbra/base/progress.h"
 #include "penumbra/basis/basis_luminances.h"
-#include "penumbra/io/progress.h"
 
 namespace penumbra::basis::detail {
 
@@ -26,11 +26,11 @@ struct RadiositySetup {
 RadiositySetup prepare_radiosity(const Scene& scene, const BasisOptions& options);
 
 // solves channel c of setup for the right-hand sides direct.
-RadiosityResult solve_channel(const RadiositySetup& setup, int channel, const Eigen::MatrixXd& direct,
-                              const BasisOptions& options);
+RadiosityResult solve_channel(const RadiositySetup& setup, int channel,
+                              const Eigen::MatrixXd& direct, const BasisOptions& options);
 
 // returns a callback advancing a terminal progress line.
-std::function<void(std::size_t)> progress_of(io::Progress& progress);
+std::function<void(std::size_t)> progress_of(Progress& progress);
 
 double seconds_since(std::chrono::steady_clock::time_point start);
 

@@ -13,13 +13,16 @@ using namespace vector_ops;
 
 namespace {
 
-Eigen::Vector3d eigen(const Vec3d& v) { return {v[0], v[1], v[2]}; }
+Eigen::Vector3d eigen(const Vec3d& v) {
+  return {v[0], v[1], v[2]};
+}
 
 }  // namespace
 
 Lighting default_lighting(const BasisLuminances& basis) {
   Lighting lighting;
-  for (const BasisLight& light : basis.lights) lighting.push_back({light.coefficients, {1, 1, 1}, 1});
+  for (const BasisLight& light : basis.lights)
+    lighting.push_back({light.coefficients, {1, 1, 1}, 1});
   return lighting;
 }
 
@@ -31,10 +34,11 @@ Eigen::VectorXd world_coefficients(const photometry::Distribution& distribution,
                                    const Vec3d& axis, const Vec3d& c0, bool sigma) {
   if (is_rotationally_symmetric(distribution)) {
     const LegendreFit fit = fit_legendre(distribution, degree, sigma);
-    return world_coefficients(
-        sigma ? fit.series.sigma_smoothed().weights() : fit.series.weights(), axis);
+    return world_coefficients(sigma ? fit.series.sigma_smoothed().weights() : fit.series.weights(),
+                              axis);
   }
-  return rotate_sh(sh_coefficients_of(distribution, degree), photometric_frame(eigen(axis), eigen(c0)));
+  return rotate_sh(sh_coefficients_of(distribution, degree),
+                   photometric_frame(eigen(axis), eigen(c0)));
 }
 
 Vec3d reaimed_c0(const Vec3d& axis, const Vec3d& old_c0) {
@@ -82,8 +86,10 @@ Relit relight(const BasisLuminances& basis, const Lighting& lighting, bool verti
     const bool grey = basis.channels == 1;
     for (int channel = 0; channel < basis.channels; ++channel) {
       const int target = grey ? -1 : channel;
-      add(light.vertex_luminance[static_cast<std::size_t>(channel)], vertices, relit.vertex_luminance, target);
-      if (!vertices_only) add(light.total[static_cast<std::size_t>(channel)], patches, relit.total, target);
+      add(light.vertex_luminance[static_cast<std::size_t>(channel)], vertices,
+          relit.vertex_luminance, target);
+      if (!vertices_only)
+        add(light.total[static_cast<std::size_t>(channel)], patches, relit.total, target);
     }
     if (!vertices_only) add(light.direct, patches, relit.direct, -1);
   }

@@ -15,8 +15,9 @@ SceneRadiosity solve_scene_radiosity(const Scene& scene, const BasisOptions& opt
   result.form_factor_entries = static_cast<std::size_t>(setup.F.nonZeros());
   auto start = std::chrono::steady_clock::now();
   {
-    io::Progress progress("direct light", setup.mesh.size());
-    result.direct_per_light = exact_direct_illuminance(scene, setup.mesh, options.parallel, progress_of(progress));
+    Progress progress("direct light", setup.mesh.size());
+    result.direct_per_light =
+        exact_direct_illuminance(scene, setup.mesh, options.parallel, progress_of(progress));
   }
   result.timings.direct_s = seconds_since(start);
   start = std::chrono::steady_clock::now();
@@ -27,7 +28,8 @@ SceneRadiosity solve_scene_radiosity(const Scene& scene, const BasisOptions& opt
     result.iterations = std::max(result.iterations, solved.iterations);
     result.total.col(channel) = solved.illuminance.col(0);
   }
-  for (int channel = result.channels; channel < 3; ++channel) result.total.col(channel) = result.total.col(0);
+  for (int channel = result.channels; channel < 3; ++channel)
+    result.total.col(channel) = result.total.col(0);
   result.timings.solve_s = seconds_since(start);
   result.mesh = std::move(setup.mesh);
   return result;

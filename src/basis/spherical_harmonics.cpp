@@ -3,14 +3,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/gauss_legendre.h"
 
 namespace penumbra::basis {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
+namespace {}  // namespace
 
 int sh_degree(Eigen::Index coefficient_count) {
   const auto root = static_cast<Eigen::Index>(std::llround(std::sqrt(double(coefficient_count))));
@@ -32,7 +29,7 @@ Eigen::VectorXd real_spherical_harmonics(int degree, const Eigen::Vector3d& dire
   // These follow from the unnormalised (l - m) P_l^m = (2l - 1) z P_{l-1}^m
   // - (l + m - 1) P_{l-2}^m and P_m^m = (2m - 1)!! sin^m (docs/basis.md); the Appendix's
   // eq. (23) is not a complete recurrence.
-  double diagonal = 1 / std::sqrt(4 * kPi);
+  double diagonal = 1 / std::sqrt(4 * pi);
   double re = 1, im = 0;  // Re, Im of (x + i y)^m = sin^m(theta) e^{i m phi}
   for (int m = 0; m <= degree; ++m) {
     if (m > 0) {
@@ -77,7 +74,7 @@ Eigen::VectorXd zonal_sh_coefficients(const std::vector<double>& legendre_weight
   // Dobashi eqs. (7)-(10): P_l(a . r) = 4 pi / (2l + 1) sum_m Y_lm(a) Y_lm(r).
   for (int l = 0; l <= degree; ++l)
     for (int m = -l; m <= l; ++m)
-      coefficients[sh_index(l, m)] *= 4 * kPi / (2 * l + 1) * legendre_weights[l];
+      coefficients[sh_index(l, m)] *= 4 * pi / (2 * l + 1) * legendre_weights[l];
   return coefficients;
 }
 
@@ -90,9 +87,9 @@ SphereQuadrature product_sphere_quadrature(int degree) {
     const double z = in_z.nodes[i];
     const double s = std::sqrt(std::max(0.0, 1 - z * z));
     for (int k = 0; k < azimuths; ++k) {
-      const double phi = 2 * kPi * k / azimuths;
+      const double phi = 2 * pi * k / azimuths;
       rule.directions.emplace_back(s * std::cos(phi), s * std::sin(phi), z);
-      rule.weights.push_back(in_z.weights[i] * 2 * kPi / azimuths);
+      rule.weights.push_back(in_z.weights[i] * 2 * pi / azimuths);
     }
   }
   return rule;

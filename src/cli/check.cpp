@@ -6,7 +6,7 @@
 #include <memory>
 #include <set>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 #include "penumbra/io/shadow_compare.h"
 #include "penumbra/io/shadow_json.h"
 #include "penumbra/scene/load_scene.h"

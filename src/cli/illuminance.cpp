@@ -2,7 +2,6 @@
 // (Nishita 1985 sections 3.3 and 4.2), with statistics and an isolux plot.
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -12,17 +11,16 @@
 #include <string_view>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
+#include "numeric_csv.h"
+#include "penumbra/base/atomic_file.h"
+#include "penumbra/base/csv.h"
+#include "penumbra/base/input_error.h"
+#include "penumbra/base/progress.h"
 #include "penumbra/illuminance/isolux.h"
 #include "penumbra/illuminance/scene_illuminance.h"
 #include "penumbra/illuminance/workplane.h"
-#include "penumbra/input_error.h"
-#include "penumbra/io/atomic_file.h"
-#include "penumbra/io/progress.h"
+#include "penumbra/io/isolux_svg.h"
 #include "penumbra/scene/load_scene.h"
-#include "numeric_csv.h"
 #include "verbs.h"
 
 namespace penumbra::cli {
@@ -41,12 +39,6 @@ struct IlluminanceArguments {
   std::string levels;
 };
 
-// A receiving point as read from the points file.
-struct Receiver {
-  Vec3d point;
-  Vec3d normal;  // unit
-};
-
 // === Reading the points file (header x,y,z,nx,ny,nz; columns found by name)
 
 // the tolerance on |normal| - 1: enough for normals written with four decimals
@@ -54,12 +46,13 @@ struct Receiver {
 // mix-up than a normal, so it is refused rather than silently rescaled.
 constexpr double kNormalLengthTolerance = 1e-3;
 
-std::vector<Receiver> read_points(const std::string& file) {
-  std::vector<Receiver> receivers;
-  for (const NumericRow& row : read_numeric_csv(file, {"x", "y", "z", "nx", "ny", "nz"}, "points file")) {
+std::vector<il::ReceivingPoint> read_points(const std::string& file) {
+  std::vector<il::ReceivingPoint> receivers;
+  for (const NumericRow& row :
+       read_numeric_csv(file, {"x", "y", "z", "nx", "ny", "nz"}, "points file")) {
     const std::vector<double>& value = row.values;
     const std::string where = "line " + std::to_string(row.line);
-    Receiver receiver{{value[0], value[1], value[2]}, {value[3], value[4], value[5]}};
+    il::ReceivingPoint receiver{{value[0], value[1], value[2]}, {value[3], value[4], value[5]}};
     const double length =
         std::sqrt(value[3] * value[3] + value[4] * value[4] + value[5] * value[5]);
     if (length == 0)
@@ -76,54 +69,39 @@ std::vector<Receiver> read_points(const std::string& file) {
 
 // === Writing CSV
 
-std::string format_double(double value) {
-  char text[32];
-  const auto result = std::to_chars(text, text + sizeof text, value);
-  return std::string(text, result.ptr);
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
 // writes the values: x,y,z,nx,ny,nz,E,E[<light>]...,inside (the object containing the
 // point, empty when none).
-void write_values(std::ostream& out, const Scene& scene, const std::vector<Receiver>& receivers,
+void write_values(std::ostream& out, const Scene& scene,
+                  const std::vector<il::ReceivingPoint>& receivers,
                   const std::vector<il::PointIlluminance>& values) {
-  out << "x,y,z,nx,ny,nz,E";
-  for (const Light& light : scene.lights) out << ',' << csv_field("E[" + light.name + "]");
-  out << ",inside\n";
+  std::vector<std::string> columns{"x", "y", "z", "nx", "ny", "nz", "E"};
+  for (const Light& light : scene.lights) columns.push_back("E[" + light.name + "]");
+  columns.push_back("inside");
+  CsvWriter csv(out, columns);
   for (std::size_t k = 0; k < receivers.size(); ++k) {
-    for (double coordinate : receivers[k].point) out << format_double(coordinate) << ',';
-    for (double component : receivers[k].normal) out << format_double(component) << ',';
-    out << format_double(values[k].total);
-    for (double value : values[k].per_light) out << ',' << format_double(value);
-    out << ',' << (values[k].inside ? csv_field(scene.objects[*values[k].inside].name) : "")
-        << '\n';
+    for (double coordinate : receivers[k].point) csv.number(coordinate);
+    for (double component : receivers[k].normal) csv.number(component);
+    csv.number(values[k].total);
+    for (double value : values[k].per_light) csv.number(value);
+    csv.text(values[k].inside ? scene.objects[*values[k].inside].name : "");
+    csv.end_row();
   }
 }
 
 int run_points(const IlluminanceArguments& arguments, const Scene& scene) {
-  const std::vector<Receiver> receivers = read_points(arguments.points);
+  const std::vector<il::ReceivingPoint> receivers = read_points(arguments.points);
   const il::IlluminanceSolver solver(scene);
-  std::vector<il::PointIlluminance> values(receivers.size());
+  std::vector<il::PointIlluminance> values;
   {
-    io::Progress progress("illuminance", receivers.size());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, receivers.size(), 16),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t k = range.begin(); k != range.end(); ++k)
-                          values[k] = solver.at(receivers[k].point, receivers[k].normal);
-                        progress.advance(range.size());
-                      });
+    Progress progress("illuminance", receivers.size());
+    values = il::illuminance_at_points(solver, receivers,
+                                       [&](std::size_t done) { progress.advance(done); });
   }
   if (arguments.output.empty() || arguments.output == "-")
     write_values(std::cout, scene, receivers, values);
   else
-    io::write_atomically(arguments.output,
-                         [&](std::ostream& out) { write_values(out, scene, receivers, values); });
+    write_atomically(arguments.output,
+                     [&](std::ostream& out) { write_values(out, scene, receivers, values); });
   return 0;
 }
 
@@ -160,24 +138,21 @@ int run_workplane(const IlluminanceArguments& arguments, const Scene& scene) {
   const il::IlluminanceSolver solver(scene);
   il::WorkplaneValues values;
   {
-    io::Progress progress("work plane", grid.size());
+    Progress progress("work plane", grid.size());
     values =
         il::evaluate_workplane(solver, grid, [&](std::size_t done) { progress.advance(done); });
   }
   const il::WorkplaneStatistics statistics = il::workplane_statistics(values);
 
   if (!arguments.output.empty()) {
-    std::vector<Receiver> receivers;
-    for (std::size_t k = 0; k < grid.size(); ++k) receivers.push_back({grid.point(k), {0, 0, 1}});
-    io::write_atomically(arguments.output, [&](std::ostream& out) {
-      write_values(out, scene, receivers, values.values);
+    write_atomically(arguments.output, [&](std::ostream& out) {
+      write_values(out, scene, il::workplane_points(grid), values.values);
     });
   }
   if (!arguments.svg.empty()) {
     if (levels.empty()) levels = il::isolux_levels(statistics.minimum, statistics.maximum);
-    io::write_atomically(arguments.svg, [&](std::ostream& out) {
-      il::write_isolux_svg(out, scene, values, levels);
-    });
+    write_atomically(arguments.svg,
+                     [&](std::ostream& out) { io::write_isolux_svg(out, scene, values, levels); });
   }
 
   std::ostringstream report;

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "lid_fit.h"
-#include "penumbra/input_error.h"
-#include "penumbra/io/atomic_file.h"
+#include "penumbra/base/atomic_file.h"
+#include "penumbra/base/input_error.h"
 #include "penumbra/photometry/eulumdat.h"
 #include "penumbra/photometry/figures.h"
 #include "penumbra/photometry/ies.h"
@@ -180,7 +180,7 @@ int run_convert(const std::string& argument, const std::string& output) {
                      "penumbra lid convert writes LM-63 files: the output must end in .ies");
   const Source source = load_source(argument, Interpolation::linear);
   const IesFile ies = ies_for(source);
-  io::write_atomically(output, [&](std::ostream& out) { write_ies(out, ies); });
+  write_atomically(output, [&](std::ostream& out) { write_ies(out, ies); });
   return 0;
 }
 

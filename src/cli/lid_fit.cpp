@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "penumbra/base/input_error.h"
 #include "penumbra/basis/distribution_fit.h"
 #include "penumbra/basis/sigma_factors.h"
 #include "penumbra/basis/spherical_harmonics.h"
-#include "penumbra/input_error.h"
 
 namespace penumbra::cli {
 namespace {

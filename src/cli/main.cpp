@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 #include "verbs.h"
 
 int main(int argc, char** argv) {
@@ -10,8 +10,9 @@ int main(int argc, char** argv) {
   CLI::App app{"penumbra: exact shadows and illuminance for scenes of convex polyhedra"};
   app.name("penumbra");
   app.require_subcommand(1);
-  app.footer("Exit status: 0 success, 1 a check found differences, 2 bad input or usage.\n"
-             "Run 'penumbra VERB --help' for the options of a verb.");
+  app.footer(
+      "Exit status: 0 success, 1 a check found differences, 2 bad input or usage.\n"
+      "Run 'penumbra VERB --help' for the options of a verb.");
 
   register_info(app);
   register_shadows(app);

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string_view>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 
 namespace penumbra::cli {
 
@@ -31,7 +31,8 @@ std::vector<std::string_view> split(std::string_view line) {
 
 }  // namespace
 
-std::vector<NumericRow> read_numeric_csv(const std::string& file, const std::vector<std::string>& names,
+std::vector<NumericRow> read_numeric_csv(const std::string& file,
+                                         const std::vector<std::string>& names,
                                          const std::string& what) {
   std::string expected;
   for (const std::string& name : names) expected += (expected.empty() ? "" : ",") + name;

@@ -16,7 +16,8 @@ struct NumericRow {
 
 // reads file (what names it in messages, e.g. "points file"), returning the named columns
 // of every non-blank line. Throws InputError naming the file, the line and the column.
-std::vector<NumericRow> read_numeric_csv(const std::string& file, const std::vector<std::string>& names,
+std::vector<NumericRow> read_numeric_csv(const std::string& file,
+                                         const std::vector<std::string>& names,
                                          const std::string& what);
 
 // parses a comma-separated list of finite numbers given to option on the command line.

@@ -4,8 +4,9 @@
 #include <iomanip>
 #include <iostream>
 
+#include "penumbra/base/atomic_file.h"
 #include "penumbra/basis/scene_radiosity.h"
-#include "penumbra/io/atomic_file.h"
+#include "penumbra/io/patches_csv.h"
 #include "penumbra/scene/load_scene.h"
 #include "radiosity_options.h"
 #include "verbs.h"
@@ -22,30 +23,27 @@ struct Arguments {
 int run(Arguments& args) {
   finish_radiosity_options(args.radiosity);
   const Scene scene = load_scene(args.scene);
-  for (const std::string& warning : scene.warnings) std::cerr << "penumbra: warning: " << warning << "\n";
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "penumbra: warning: " << warning << "\n";
   const basis::SceneRadiosity solved = basis::solve_scene_radiosity(scene, args.radiosity.options);
-  io::write_atomically(args.output, [&](std::ostream& out) {
-    out << "object,face,x,y,z,nx,ny,nz,area,E_direct,E";
-    if (solved.channels == 3) out << ",E_r,E_g,E_b";
-    out << '\n' << std::setprecision(10);
-    for (std::size_t i = 0; i < solved.mesh.size(); ++i) {
-      const basis::Patch& patch = solved.mesh.patches()[i];
-      const auto row = static_cast<Eigen::Index>(i);
-      out << scene.objects[patch.object].name << ',' << patch.face;
-      for (double v : patch.centre) out << ',' << v;
-      for (double v : patch.normal) out << ',' << v;
-      out << ',' << patch.area << ',' << solved.direct_per_light.row(row).sum() << ','
-          << basis::photometric(solved.total(row, 0), solved.total(row, 1), solved.total(row, 2));
-      if (solved.channels == 3)
-        out << ',' << solved.total(row, 0) << ',' << solved.total(row, 1) << ',' << solved.total(row, 2);
-      out << '\n';
-    }
+  write_atomically(args.output, [&](std::ostream& out) {
+    io::write_patches_csv(
+        out, solved.mesh, [&](std::size_t object) { return scene.objects[object].name; },
+        [&](std::size_t i) {
+          const auto row = static_cast<Eigen::Index>(i);
+          return io::PatchIlluminance{
+              solved.direct_per_light.row(row).sum(),
+              basis::photometric(solved.total(row, 0), solved.total(row, 1), solved.total(row, 2)),
+              {solved.total(row, 0), solved.total(row, 1), solved.total(row, 2)}};
+        },
+        solved.channels == 3);
   });
-  std::cout << "patches " << solved.mesh.size() << ", form factor entries " << solved.form_factor_entries
-            << ", sweeps " << solved.iterations << ", channels " << solved.channels << "\n"
+  std::cout << "patches " << solved.mesh.size() << ", form factor entries "
+            << solved.form_factor_entries << ", sweeps " << solved.iterations << ", channels "
+            << solved.channels << "\n"
             << std::setprecision(3) << "time: mesh " << solved.timings.mesh_s << " s, form factors "
-            << solved.timings.form_factors_s << " s, direct " << solved.timings.direct_s << " s, solve "
-            << solved.timings.solve_s << " s\n";
+            << solved.timings.form_factors_s << " s, direct " << solved.timings.direct_s
+            << " s, solve " << solved.timings.solve_s << " s\n";
   return 0;
 }
 

@@ -2,19 +2,21 @@
 
 #include <cmath>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 
 namespace penumbra::cli {
 
 void add_radiosity_options(CLI::App* verb, RadiosityArguments& arguments) {
   basis::BasisOptions& options = arguments.options;
-  verb->add_option("--patch-size", options.patch_size, "largest patch edge (m)")->capture_default_str();
+  verb->add_option("--patch-size", options.patch_size, "largest patch edge (m)")
+      ->capture_default_str();
   verb->add_option("--form-factors", arguments.method,
                    "rays (stratified cosine rays per patch) or analytic (point-to-polygon, O(n^2))")
       ->capture_default_str();
   verb->add_option("--rays", options.form_factors.rays, "rays per patch for --form-factors rays")
       ->capture_default_str();
-  verb->add_option("--seed", options.form_factors.seed, "seed of the ray directions")->capture_default_str();
+  verb->add_option("--seed", options.form_factors.seed, "seed of the ray directions")
+      ->capture_default_str();
   verb->add_option("--tolerance", options.radiosity.tolerance,
                    "stop when a sweep changes E by less than this fraction")
       ->capture_default_str();

@@ -5,10 +5,11 @@
 #include <iostream>
 #include <memory>
 
-#include "penumbra/input_error.h"
-#include "penumbra/io/atomic_file.h"
-#include "penumbra/io/png.h"
-#include "penumbra/io/tone_map.h"
+#include "penumbra/base/atomic_file.h"
+#include "penumbra/base/csv.h"
+#include "penumbra/base/input_error.h"
+#include "penumbra/base/png.h"
+#include "penumbra/base/tone_map.h"
 #include "penumbra/raytrace/render.h"
 #include "penumbra/scene/load_scene.h"
 #include "verbs.h"
@@ -32,16 +33,16 @@ struct RaytraceArguments {
 
 void write_values(const std::string& path, const Scene& scene,
                   const raytrace::RenderedImage& image) {
-  io::write_atomically(path, [&](std::ostream& out) {
-    out << "px,py,object,R,G,B\n" << std::setprecision(9);
+  write_atomically(path, [&](std::ostream& out) {
+    CsvWriter csv(out, {"px", "py", "object", "R", "G", "B"});
     for (int j = 0; j < image.height; ++j)
       for (int i = 0; i < image.width; ++i) {
         const std::size_t index = static_cast<std::size_t>(j) * image.width + i;
         const long object = image.objects[index];
-        const raytrace::Radiance& value = image.pixels[index];
-        out << i << ',' << j << ','
-            << (object >= 0 ? scene.objects[static_cast<std::size_t>(object)].name : "") << ','
-            << value[0] << ',' << value[1] << ',' << value[2] << '\n';
+        csv.integer(i).integer(j).text(
+            object >= 0 ? scene.objects[static_cast<std::size_t>(object)].name : "");
+        for (double channel : image.pixels[index]) csv.number(channel);
+        csv.end_row();
       }
   });
 }
@@ -73,7 +74,7 @@ int run_raytrace(const RaytraceArguments& args) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  io::write_png(args.output, image.width, image.height, io::to_srgb8(image.pixels, image.exposure));
+  write_png(args.output, image.width, image.height, to_srgb8(image.pixels, image.exposure));
   if (!args.values.empty()) write_values(args.values, scene, image);
 
   const raytrace::RayCounts& rays = image.counts;
@@ -123,8 +124,9 @@ void register_raytrace(CLI::App& app) {
       ->check([](const std::string& text) {
         return parse_exposure(text) < 0 ? "expected 'auto' or a positive number" : "";
       });
-  verb->add_option("--tube-samples", args->tube_samples,
-                   "samples of a tube's Phong highlight per shading point (its diffuse light is exact)")
+  verb->add_option(
+          "--tube-samples", args->tube_samples,
+          "samples of a tube's Phong highlight per shading point (its diffuse light is exact)")
       ->capture_default_str()
       ->check(CLI::Range(1, 4096));
   verb->add_option("--values", args->values, "CSV of px,py,object,R,G,B (linear luminance)");

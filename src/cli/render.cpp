@@ -10,11 +10,12 @@
 #include <memory>
 #include <sstream>
 
+#include "penumbra/base/atomic_file.h"
+#include "penumbra/base/csv.h"
+#include "penumbra/base/input_error.h"
+#include "penumbra/base/png.h"
+#include "penumbra/base/tone_map.h"
 #include "penumbra/illuminance/isolux.h"
-#include "penumbra/input_error.h"
-#include "penumbra/io/atomic_file.h"
-#include "penumbra/io/png.h"
-#include "penumbra/io/tone_map.h"
 #include "penumbra/render/isolux_belts.h"
 #include "penumbra/render/scanline_renderer.h"
 #include "penumbra/scene/load_scene.h"
@@ -54,19 +55,20 @@ std::vector<double> parse_levels(const std::string& text) {
 }
 
 void write_values(const std::string& path, const Scene& scene, const render::RenderedImage& image) {
-  io::write_atomically(path, [&](std::ostream& out) {
-    out << "px,py,object,face,E,L\n" << std::setprecision(12);
+  write_atomically(path, [&](std::ostream& out) {
+    CsvWriter csv(out, {"px", "py", "object", "face", "E", "L"});
     for (int j = 0; j < image.height; ++j)
       for (int i = 0; i < image.width; ++i) {
         const std::size_t pixel = image.index(i, j);
         const long object = image.visibility.objects[pixel];
-        out << i << ',' << j << ',';
+        csv.integer(i).integer(j);
         if (object >= 0)
-          out << scene.objects[static_cast<std::size_t>(object)].name << ','
-              << image.visibility.faces[pixel];
+          csv.text(scene.objects[static_cast<std::size_t>(object)].name)
+              .integer(image.visibility.faces[pixel]);
         else
-          out << ',';
-        out << ',' << image.illuminance[pixel] << ',' << image.luminance[pixel] << '\n';
+          csv.blank().blank();
+        csv.number(image.illuminance[pixel]).number(image.luminance[pixel]);
+        csv.end_row();
       }
   });
 }
@@ -90,8 +92,8 @@ int run_render(const RenderArguments& args) {
   const render::RenderedImage image = renderer.render(options);
   const auto finished = std::chrono::steady_clock::now();
 
-  const double exposure = exposure_given > 0 ? exposure_given : io::auto_exposure(image.radiance);
-  std::vector<std::uint8_t> rgb = io::to_srgb8(image.radiance, exposure);
+  const double exposure = exposure_given > 0 ? exposure_given : auto_exposure(image.radiance);
+  std::vector<std::uint8_t> rgb = to_srgb8(image.radiance, exposure);
   double maximum = 0, minimum = 0;
   for (std::size_t pixel = 0; pixel < image.illuminance.size(); ++pixel) {
     if (image.visibility.objects[pixel] < 0) continue;
@@ -105,7 +107,7 @@ int run_render(const RenderArguments& args) {
     render::paint_isolux_belts(rgb, image, levels);
     render::draw_isolux_legend(rgb, image.width, image.height, levels, top);
   }
-  io::write_png(args.output, image.width, image.height, rgb);
+  write_png(args.output, image.width, image.height, rgb);
   if (!args.values.empty()) write_values(args.values, scene, image);
 
   const auto seconds = [](auto from, auto to) {

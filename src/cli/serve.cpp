@@ -7,9 +7,9 @@
 #include <iostream>
 #include <memory>
 
+#include "penumbra/base/input_error.h"
 #include "penumbra/basis/basis_file.h"
 #include "penumbra/basis/basis_luminances.h"
-#include "penumbra/input_error.h"
 #include "penumbra/scene/load_scene.h"
 #include "penumbra/serve/lighting_server.h"
 #include "verbs.h"

@@ -4,8 +4,8 @@
 #include <iostream>
 #include <memory>
 
-#include "penumbra/input_error.h"
-#include "penumbra/io/atomic_file.h"
+#include "penumbra/base/atomic_file.h"
+#include "penumbra/base/input_error.h"
 #include "penumbra/io/shadow_drawing.h"
 #include "penumbra/io/shadow_json.h"
 #include "penumbra/scene/load_scene.h"
@@ -59,18 +59,18 @@ int run_shadows(const ShadowsArguments& arguments) {
   if (arguments.output.empty() || arguments.output == "-")
     std::cout << io::format_json(document);
   else
-    io::write_atomically(arguments.output,
-                         [&](std::ostream& out) { out << io::format_json(document); });
+    write_atomically(arguments.output,
+                     [&](std::ostream& out) { out << io::format_json(document); });
   if (!arguments.svg.empty())
-    io::write_atomically(arguments.svg, [&](std::ostream& out) {
+    write_atomically(arguments.svg, [&](std::ostream& out) {
       io::write_shadow_svg(out, document, *view, scene.camera, arguments.loops);
     });
   if (!arguments.dxf.empty())
-    io::write_atomically(arguments.dxf,
-                         [&](std::ostream& out) { io::write_shadow_dxf(out, document); });
+    write_atomically(arguments.dxf,
+                     [&](std::ostream& out) { io::write_shadow_dxf(out, document); });
   if (!arguments.report.empty())
-    io::write_atomically(arguments.report,
-                         [&](std::ostream& out) { io::write_shadow_csv(out, document); });
+    write_atomically(arguments.report,
+                     [&](std::ostream& out) { io::write_shadow_csv(out, document); });
 
   if (arguments.stats)
     for (const LightShadows& light : result.lights) {

@@ -2,10 +2,12 @@
 // The line of a linear source seen from a receiving point (private; docs/illuminance.md):
 // Q(u) - P = (t_a + u L) d + w with d the unit axis, w perpendicular to d, h = |w|.
 
+#include "penumbra/base/vec3d.h"
 #include "penumbra/illuminance/linear_source.h"
-#include "vector_math.h"
 
 namespace penumbra::illuminance::detail {
+
+using namespace vector_ops;
 
 struct LineFrame {
   double length = 0;             // L = |B - A|; 0 for a degenerate source (the rest is unset)

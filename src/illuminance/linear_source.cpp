@@ -6,16 +6,18 @@
 
 #include "adaptive_quadrature.h"
 #include "line_frame.h"
-#include "vector_math.h"
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra::illuminance {
+
+using namespace vector_ops;
 
 namespace detail {
 
 LineFrame line_frame(const Vec3d& point, const Vec3d& normal, const Vec3d& a, const Vec3d& b) {
   LineFrame frame;
   const Vec3d along = b - a;
-  frame.length = norm(along);
+  frame.length = length(along);
   if (!(frame.length > 0)) return frame;
   frame.axis = (1 / frame.length) * along;
   // Measure the foot of the perpendicular from the endpoint nearer to P, so that the
@@ -27,7 +29,7 @@ LineFrame line_frame(const Vec3d& point, const Vec3d& normal, const Vec3d& a, co
   const double t_base = dot(base, frame.axis);
   frame.t_a = use_b ? t_base - frame.length : t_base;
   frame.perpendicular = base - t_base * frame.axis;
-  frame.distance = norm(frame.perpendicular);
+  frame.distance = length(frame.perpendicular);
   frame.axial = dot(normal, frame.axis);
   frame.lateral = frame.distance > 0 ? dot(normal, frame.perpendicular) / frame.distance : 0;
   return frame;
@@ -146,7 +148,7 @@ double eq5_integrand(const Vec3d& axis, const Vec3d& normal, const Vec3d& v) {
   const double signed_distance = dot(normal, v);
   if (!(signed_distance > 0)) return 0;
   const double r_squared = dot(v, v);
-  return norm(cross(axis, v)) * signed_distance / (r_squared * r_squared);
+  return length(cross(axis, v)) * signed_distance / (r_squared * r_squared);
 }
 
 double quadrature(const LineFrame& frame, const Vec3d& normal, double u0, double u1,

@@ -7,15 +7,16 @@
 
 #include "adaptive_quadrature.h"
 #include "line_frame.h"
-#include "vector_math.h"
+#include "penumbra/base/numbers.h"
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra::illuminance {
+
+using namespace vector_ops;
 
 namespace {
 
 using namespace detail;
-
-constexpr double pi = 3.14159265358979323846;
 
 // returns cos^n(psi) for the light arriving from unit direction `to_light`, or 0 when the
 // light or the viewer is not strictly on the outer side or cos(psi) <= 0 (Phong 1975).
@@ -66,7 +67,7 @@ double linear_specular(const Vec3d& point, const Vec3d& normal, const Vec3d& to_
     const double r_squared = dot(v, v);
     if (!(r_squared > 0)) return 0.0;
     const Vec3d to_light = (1 / std::sqrt(r_squared)) * v;
-    const double sin_theta = norm(cross(frame.axis, to_light));
+    const double sin_theta = length(cross(frame.axis, to_light));
     return sin_theta / r_squared * phong_lobe(normal, to_viewer, to_light, material.shininess);
   };
 

@@ -5,9 +5,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 namespace penumbra::illuminance {
 namespace {
 
@@ -54,17 +51,16 @@ std::optional<PlanRegion> plan_bounds(const Scene& scene) {
   return PlanRegion{box.xmin(), box.ymin(), box.xmax(), box.ymax()};
 }
 
+std::vector<ReceivingPoint> workplane_points(const WorkplaneGrid& grid) {
+  std::vector<ReceivingPoint> points;
+  points.reserve(grid.size());
+  for (std::size_t k = 0; k < grid.size(); ++k) points.push_back({grid.point(k), {0, 0, 1}});
+  return points;
+}
+
 WorkplaneValues evaluate_workplane(const IlluminanceSolver& solver, const WorkplaneGrid& grid,
                                    const std::function<void(std::size_t)>& advance) {
-  WorkplaneValues result{grid, std::vector<PointIlluminance>(grid.size())};
-  const Vec3d up{0, 0, 1};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, grid.size(), 16),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t k = range.begin(); k != range.end(); ++k)
-                        result.values[k] = solver.at(grid.point(k), up);
-                      if (advance) advance(range.size());
-                    });
-  return result;
+  return {grid, illuminance_at_points(solver, workplane_points(grid), advance)};
 }
 
 WorkplaneStatistics workplane_statistics(const WorkplaneValues& values) {

@@ -3,7 +3,7 @@
 #include <map>
 #include <sstream>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 
 namespace penumbra::io {
 namespace {

@@ -3,33 +3,23 @@
 #include <set>
 #include <sstream>
 
+#include "penumbra/base/vec3d.h"
 #include "penumbra/io/shadow_drawing.h"
 
 namespace penumbra::io {
 namespace {
 
-using Vec = std::array<double, 3>;
-
-Vec cross(const Vec& a, const Vec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec& a, const Vec& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec unit(const Vec& a) {
-  const double length = std::sqrt(dot(a, a));
-  return {a[0] / length, a[1] / length, a[2] / length};
-}
+using namespace vector_ops;
 
 // The object coordinate system of an entity with extrusion direction n (DXF
 // reference, "Arbitrary Axis Algorithm").
 struct Ocs {
-  Vec x, y, z;
-  explicit Ocs(const Vec& normal) : z(unit(normal)) {
+  Vec3d x, y, z;
+  explicit Ocs(const Vec3d& normal) : z(normalized(normal)) {
     const double limit = 1.0 / 64;
-    x = unit(std::abs(z[0]) < limit && std::abs(z[1]) < limit ? cross({0, 1, 0}, z)
-                                                              : cross({0, 0, 1}, z));
-    y = unit(cross(z, x));
+    x = normalized(std::abs(z[0]) < limit && std::abs(z[1]) < limit ? cross({0, 1, 0}, z)
+                                                                    : cross({0, 0, 1}, z));
+    y = normalized(cross(z, x));
   }
 };
 
@@ -46,7 +36,7 @@ class DxfWriter {
   }
 
   // writes a closed LWPOLYLINE through world points, all in the plane of normal.
-  void polyline(const std::string& layer, const nlohmann::json& ring, const Vec& normal) {
+  void polyline(const std::string& layer, const nlohmann::json& ring, const Vec3d& normal) {
     const Ocs ocs(normal);
     tag(0, "LWPOLYLINE");
     tag(5, handle());
@@ -55,10 +45,10 @@ class DxfWriter {
     tag(100, "AcDbPolyline");
     tag(90, std::to_string(ring.size()));
     tag(70, "1");
-    const Vec first = ring.at(0).get<Vec>();
+    const Vec3d first = ring.at(0).get<Vec3d>();
     tag(38, dot(first, ocs.z));
     for (const auto& point : ring) {
-      const Vec p = point.get<Vec>();
+      const Vec3d p = point.get<Vec3d>();
       tag(10, dot(p, ocs.x));
       tag(20, dot(p, ocs.y));
     }
@@ -113,7 +103,7 @@ void write_shadow_dxf(std::ostream& out, const nlohmann::json& document) {
   dxf.tag(2, "ENTITIES");
   for (const auto& face : document.at("faces")) {
     const auto& plane = face.at("plane");
-    const Vec normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
+    const Vec3d normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
     dxf.polyline("faces", face.at("boundary"), normal);
     for (const auto& light : face.at("lights")) {
       if (light.value("beyond_range", false)) continue;

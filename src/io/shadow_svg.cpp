@@ -5,56 +5,21 @@
 #include <sstream>
 
 #include "penumbra/io/shadow_drawing.h"
+#include "penumbra/scene/camera_frame.h"
+#include "svg_text.h"
 
 namespace penumbra::io {
 namespace {
 
 using nlohmann::json;
-using Vec = std::array<double, 3>;
+using namespace vector_ops;
 using Flat = std::array<double, 2>;
 
 const char* const palette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-Vec sub(const Vec& a, const Vec& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Vec& a, const Vec& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec cross(const Vec& a, const Vec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec unit(const Vec& a) {
-  const double length = std::sqrt(dot(a, a));
-  return {a[0] / length, a[1] / length, a[2] / length};
-}
-
 // A projection of world points to drawing coordinates (before fitting to the sheet);
 // nullopt when a point cannot be drawn (behind the camera).
-using Projection = std::function<std::optional<Flat>(const Vec&)>;
+using Projection = std::function<std::optional<Flat>(const Vec3d&)>;
 
 struct Shape {
   std::vector<std::vector<Flat>> rings;
@@ -70,7 +35,7 @@ struct FaceDrawing {
 std::optional<std::vector<Flat>> project_ring(const json& ring, const Projection& project) {
   std::vector<Flat> out;
   for (const auto& point : ring) {
-    const auto p = project(point.get<Vec>());
+    const auto p = project(point.get<Vec3d>());
     if (!p) return std::nullopt;
     out.push_back(*p);
   }
@@ -186,16 +151,17 @@ void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
         reached =
             reached || (!light.at("faces_away").get<bool>() && !light.value("beyond_range", false));
       if (!reached) continue;
-      const Vec origin = face.at("frame").at("origin").get<Vec>();
-      const Vec u = face.at("frame").at("u").get<Vec>(), v = face.at("frame").at("v").get<Vec>();
-      const Projection project = [&](const Vec& p) -> std::optional<Flat> {
-        return Flat{dot(sub(p, origin), u), dot(sub(p, origin), v)};
+      const Vec3d origin = face.at("frame").at("origin").get<Vec3d>();
+      const Vec3d u = face.at("frame").at("u").get<Vec3d>(),
+                  v = face.at("frame").at("v").get<Vec3d>();
+      const Projection project = [&](const Vec3d& p) -> std::optional<Flat> {
+        return Flat{dot(p - origin, u), dot(p - origin, v)};
       };
       const double x0 = (index % columns) * panel, y0 = legend_height + (index / columns) * panel;
       body << "<g>\n<text x=\"" << x0 + 10 << "\" y=\"" << y0 + 16
            << "\" font-family=\"sans-serif\" font-size=\"12\">"
-           << escape(face.at("object").get<std::string>()) << " face " << face.at("face").get<int>()
-           << "</text>\n";
+           << escape_xml(face.at("object").get<std::string>()) << " face "
+           << face.at("face").get<int>() << "</text>\n";
       if (auto drawing = draw_face(face, lights, project, 0, loops))
         emit(body, {*drawing}, x0 + 10, y0 + 24, panel - 20, panel - 34, true);
       body << "</g>\n";
@@ -208,7 +174,7 @@ void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
     std::function<std::optional<double>(const json&)> depth_of;
     if (view == SvgView::top) {
       // Plan view: faces turned up, lowest first.
-      project = [](const Vec& p) -> std::optional<Flat> { return Flat{p[0], p[1]}; };
+      project = [](const Vec3d& p) -> std::optional<Flat> { return Flat{p[0], p[1]}; };
       depth_of = [](const json& face) -> std::optional<double> {
         if (face.at("plane")[2].get<double>() <= 0) return std::nullopt;
         double top = -INFINITY;
@@ -216,29 +182,25 @@ void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
         return -top;
       };
     } else {
-      const Vec eye = camera->eye;
-      const Vec forward = unit(sub(camera->target, eye));
-      const Vec right = unit(cross(forward, camera->up));
-      const Vec up = cross(right, forward);
-      const double pi = std::acos(-1.0);
-      const double focal = 0.5 * camera->height / std::tan(camera->fov_deg * pi / 360);
-      project = [=](const Vec& p) -> std::optional<Flat> {
-        const Vec d = sub(p, eye);
-        const double z = dot(d, forward);
+      const CameraFrame frame(*camera);
+      const Vec3d eye = camera->eye;
+      const double focal = 0.5 * camera->height / frame.half_height();
+      project = [=](const Vec3d& p) -> std::optional<Flat> {
+        const auto [x, y, z] = frame.to_camera(p);
         if (z <= 0) return std::nullopt;
-        return Flat{focal * dot(d, right) / z, focal * dot(d, up) / z};
+        return Flat{focal * x / z, focal * y / z};
       };
       // Faces turned toward the eye, farthest first (painter's order).
       depth_of = [=](const json& face) -> std::optional<double> {
         const auto& plane = face.at("plane");
-        const Vec normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
-        const Vec first = face.at("boundary")[0].get<Vec>();
-        if (dot(normal, sub(eye, first)) <= 0) return std::nullopt;
-        Vec centre{0, 0, 0};
+        const Vec3d normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
+        const Vec3d first = face.at("boundary")[0].get<Vec3d>();
+        if (dot(normal, eye - first) <= 0) return std::nullopt;
+        Vec3d centre{0, 0, 0};
         for (const auto& p : face.at("boundary"))
           for (int i = 0; i < 3; ++i)
             centre[i] += p[i].get<double>() / static_cast<double>(face.at("boundary").size());
-        return std::sqrt(dot(sub(centre, eye), sub(centre, eye)));
+        return length(centre - eye);
       };
     }
     for (const auto& face : faces)
@@ -273,7 +235,7 @@ void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
         << "\" fill-opacity=\"0.55\"/><rect x=\"34\" y=\"" << y
         << "\" width=\"14\" height=\"14\" fill=\"" << palette[k % 6]
         << "\" fill-opacity=\"0.2\"/><text x=\"54\" y=\"" << y + 12 << "\">umbra and penumbra of "
-        << escape(lights[k]) << "</text>\n";
+        << escape_xml(lights[k]) << "</text>\n";
   }
   out << "</g>\n" << body.str() << "</svg>\n";
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include "penumbra/base/numbers.h"
 
 namespace penumbra::photometry {
 
@@ -19,7 +20,7 @@ double CosPowerDistribution::intensity(double gamma, double) const {
 }
 
 double CosPowerDistribution::flux() const {
-  return 2 * kPi * candela_ * (1 - std::pow(std::cos(spread_), power_ + 1)) / (power_ + 1);
+  return 2 * pi * candela_ * (1 - std::pow(std::cos(spread_), power_ + 1)) / (power_ + 1);
 }
 
 double CardioidDistribution::intensity(double gamma, double) const {

@@ -5,7 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
+#include "penumbra/base/numbers.h"
 #include "penumbra/photometry/analytic_distribution.h"
 #include "penumbra/photometry/eulumdat.h"
 #include "penumbra/photometry/ies.h"
@@ -19,7 +20,7 @@ class Isotropic final : public Distribution {
   explicit Isotropic(double candela) : candela_(candela) {}
   double intensity(double, double) const override { return candela_; }
   double max_intensity() const override { return candela_; }
-  double flux() const override { return 4 * kPi * candela_; }
+  double flux() const override { return 4 * pi * candela_; }
   Symmetry symmetry() const override { return Symmetry::isotropic; }
 
  private:
@@ -157,9 +158,9 @@ double Distribution::flux() const {
   double total = 0;
   for (int i = 0; i < kU; ++i) {
     const double gamma = std::acos(1 - (i + 0.5) * (2.0 / kU));
-    for (int j = 0; j < kC; ++j) total += intensity(gamma, (j + 0.5) * (2 * kPi / kC));
+    for (int j = 0; j < kC; ++j) total += intensity(gamma, (j + 0.5) * (2 * pi / kC));
   }
-  return total * (2.0 / kU) * (2 * kPi / kC);
+  return total * (2.0 / kU) * (2 * pi / kC);
 }
 
 std::shared_ptr<const Distribution> make_isotropic(double candela) {

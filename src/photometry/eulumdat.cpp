@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "number_format.h"
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 #include "text_tokens.h"
 
 namespace penumbra::photometry {

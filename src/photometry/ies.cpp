@@ -6,7 +6,7 @@
 #include <ostream>
 
 #include "number_format.h"
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 #include "text_tokens.h"
 
 namespace penumbra::photometry {

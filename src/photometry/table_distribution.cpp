@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include "penumbra/base/numbers.h"
 
 namespace penumbra::photometry {
 namespace {
@@ -168,7 +169,7 @@ TableDistribution::TableDistribution(PhotometricGrid grid, Interpolation interpo
                               std::atan2(std::cos(vi) * std::sin(hk), std::sin(vi))};
             break;
         }
-        if (max_direction_.c < 0) max_direction_.c += 2 * kPi;
+        if (max_direction_.c < 0) max_direction_.c += 2 * pi;
       }
 }
 
@@ -215,8 +216,8 @@ double TableDistribution::native(double horizontal, double vertical) const {
 double TableDistribution::intensity(double gamma, double c) const {
   switch (grid_.type) {
     case PhotometricType::c: {
-      double azimuth = std::fmod(c, 2 * kPi);
-      if (azimuth < 0) azimuth += 2 * kPi;
+      double azimuth = std::fmod(c, 2 * pi);
+      if (azimuth < 0) azimuth += 2 * pi;
       return native(azimuth, gamma);
     }
     case PhotometricType::b: {
@@ -253,7 +254,7 @@ double TableDistribution::flux() const {
   double total = 0;
   if (symmetry_ == Symmetry::axial) {
     for (std::size_t i = 0; i + 1 < nv; ++i) total += profile(0, i);
-    return 2 * kPi * total;
+    return 2 * pi * total;
   }
   for (std::size_t j = 0; j + 1 < horizontal_.size(); ++j) {
     const double h0 = horizontal_[j], h1 = horizontal_[j + 1];

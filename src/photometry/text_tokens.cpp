@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 
 namespace penumbra::photometry::detail {
 

@@ -2,14 +2,14 @@
 
 #include <cmath>
 
-#include "penumbra/io/tone_map.h"
+#include "penumbra/base/tone_map.h"
 
 namespace penumbra::raytrace {
 
-bool values_differ(const Radiance& a, const Radiance& b, const AdaptiveOptions& options) {
+bool values_differ(const Colour& a, const Colour& b, const AdaptiveOptions& options) {
   for (int c = 0; c < 3; ++c) {
     const double difference =
-        io::srgb_encode(options.exposure * a[c]) - io::srgb_encode(options.exposure * b[c]);
+        srgb_encode(options.exposure * a[c]) - srgb_encode(options.exposure * b[c]);
     if (std::abs(difference) > options.threshold) return true;
   }
   return false;
@@ -34,11 +34,11 @@ SquareEstimate adaptive_mean(const SampleFunction& sample, double x, double y, d
   }
   // Five new points make the corners of the four quarters: edge midpoints and the centre.
   const double half = size / 2;
-  const Radiance top = sample(x + half, y);
-  const Radiance left = sample(x, y + half);
-  const Radiance centre = sample(x + half, y + half);
-  const Radiance right = sample(x + size, y + half);
-  const Radiance bottom = sample(x + half, y + size);
+  const Colour top = sample(x + half, y);
+  const Colour left = sample(x, y + half);
+  const Colour centre = sample(x + half, y + half);
+  const Colour right = sample(x + size, y + half);
+  const Colour bottom = sample(x + half, y + size);
   estimate.samples = 5;
   const Corners quarters[4] = {{corners[0], top, left, centre},
                                {top, corners[1], centre, right},

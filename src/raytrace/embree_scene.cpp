@@ -7,20 +7,22 @@
 #include <stdexcept>
 #include <string>
 
+#include "penumbra/base/vec3d.h"
 #include "penumbra/scene/scene.h"
-#include "vector3.h"
 
 namespace penumbra::raytrace {
+
+using namespace vector_ops;
 namespace {
 
 // A face plane in doubles: unit outward normal and offset, n . x + offset = 0.
 struct FacePlane {
-  Vec3 normal;
+  Vec3d normal;
   double offset;
 };
 
 FacePlane double_plane(const Plane3& plane) {
-  const Vec3 n{CGAL::to_double(plane.a()), CGAL::to_double(plane.b()), CGAL::to_double(plane.c())};
+  const Vec3d n{CGAL::to_double(plane.a()), CGAL::to_double(plane.b()), CGAL::to_double(plane.c())};
   const double norm = length(n);
   return {(1 / norm) * n, CGAL::to_double(plane.d()) / norm};
 }
@@ -84,7 +86,7 @@ struct EmbreeScene::Impl {
       const BoundingSphere& sphere = bounds[hit.object];
       // Solve |o + t d - c|^2 = r^2 (|d| = 1) in the stable form and keep the root Embree
       // found (it reports the far root for rays starting inside).
-      const Vec3 oc = ray.origin - sphere.center;
+      const Vec3d oc = ray.origin - sphere.center;
       const double b = dot(ray.direction, oc);
       const double c = dot(oc, oc) - sphere.radius * sphere.radius;
       const double discriminant = b * b - c;
@@ -131,9 +133,9 @@ EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   std::vector<float> vertices;
   std::vector<std::uint32_t> indices;
   std::vector<float> spheres;
-  Vec3 low{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-           std::numeric_limits<double>::infinity()};
-  Vec3 high = -low;
+  Vec3d low{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+            std::numeric_limits<double>::infinity()};
+  Vec3d high = -low;
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const Object& object = scene.objects[o];
     std::vector<FacePlane> planes;
@@ -153,8 +155,8 @@ EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
       }
       continue;
     }
-    const Vec3 box_low{box.xmin(), box.ymin(), box.zmin()};
-    const Vec3 box_high{box.xmax(), box.ymax(), box.zmax()};
+    const Vec3d box_low{box.xmin(), box.ymin(), box.zmin()};
+    const Vec3d box_high{box.xmax(), box.ymax(), box.zmax()};
     impl.bounds.push_back({0.5 * (box_low + box_high), 0.5 * length(box_high - box_low)});
     for (int k = 0; k < 3; ++k) {
       low[k] = std::min(low[k], box_low[k]);

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "vector3.h"
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra::raytrace {
+
+using namespace vector_ops;
 
 FacingSurface face_the_ray(const Vec3d& direction, const Vec3d& outward, double ior) {
   // Whitted section 2: the formulas for R and P assume V . N < 0.

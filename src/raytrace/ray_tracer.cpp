@@ -3,15 +3,18 @@
 #include <cmath>
 #include <limits>
 
+#include "penumbra/base/numbers.h"
+#include "penumbra/base/random.h"
+#include "penumbra/base/vec3d.h"
 #include "penumbra/photometry/orientation.h"
 #include "penumbra/raytrace/optics.h"
 #include "penumbra/raytrace/tube_sampling.h"
 #include "penumbra/raytrace/tube_visibility.h"
 #include "penumbra/scene/scene.h"
-#include "random.h"
-#include "vector3.h"
 
 namespace penumbra::raytrace {
+
+using namespace vector_ops;
 
 RayCounts& RayCounts::operator+=(const RayCounts& other) {
   camera += other.camera;
@@ -58,7 +61,7 @@ struct RayTracer::Impl {
   // returns the fraction of light that passes along the segment from origin over distance
   // (Whitted section 2: a blocked shadow ray removes the light's contribution). Transparent
   // surfaces on the way pass k_t each; shadow rays are not refracted.
-  double transmittance(const Vec3& origin, const Vec3& direction, double distance,
+  double transmittance(const Vec3d& origin, const Vec3d& direction, double distance,
                        RayCounts& counts) const {
     Ray ray{origin, direction, offset, distance - offset};
     if (ray.t_far <= ray.t_near) return 1;
@@ -86,15 +89,15 @@ struct RayTracer::Impl {
   // Phong's specular term (Whitted section 2, last paragraph of the model: highlights of
   // the light sources themselves use Phong's model, not the perturbation scheme).
   struct DirectLight {
-    const Vec3& normal;     // facing normal
-    const Vec3& to_viewer;  // unit, from the point toward where the ray came from
+    const Vec3d& normal;     // facing normal
+    const Vec3d& to_viewer;  // unit, from the point toward where the ray came from
     const Material* material;
     double illuminance = 0;  // lux
     double specular = 0;     // cd/m^2
 
     // adds a light of normal illuminance e_normal (lux) arriving from unit direction
     // to_light, with cos_alpha = N . to_light > 0.
-    void add(double e_normal, double cos_alpha, const Vec3& to_light) {
+    void add(double e_normal, double cos_alpha, const Vec3d& to_light) {
       illuminance += e_normal * cos_alpha;
       add_highlight(e_normal, cos_alpha, to_light);
     }
@@ -102,30 +105,30 @@ struct RayTracer::Impl {
     bool has_highlights() const { return material && material->specular > 0; }
 
     // adds Phong's term only.
-    void add_highlight(double e_normal, double cos_alpha, const Vec3& to_light) {
+    void add_highlight(double e_normal, double cos_alpha, const Vec3d& to_light) {
       if (!has_highlights()) return;
-      const Vec3 mirror = 2 * cos_alpha * normal - to_light;
+      const Vec3d mirror = 2 * cos_alpha * normal - to_light;
       const double cos_psi = dot(mirror, to_viewer);
       if (cos_psi > 0)
-        specular += material->specular / M_PI * e_normal * std::pow(cos_psi, material->shininess);
+        specular += material->specular / pi * e_normal * std::pow(cos_psi, material->shininess);
     }
   };
 
   // surface: the object the point lies on (its own tube occlusion is decided by convexity,
   // tube_visibility.h), {} for a free point.
-  void gather(const Vec3& point, const std::optional<ShadedSurface>& surface, DirectLight& light,
-              Random& random, RayCounts& counts) const {
-    const Vec3& normal = light.normal;
-    const Vec3& origin = point;
+  void gather(const Vec3d& point, const std::optional<ShadedSurface>& surface, DirectLight& light,
+              SplitMix64& random, RayCounts& counts) const {
+    const Vec3d& normal = light.normal;
+    const Vec3d& origin = point;
     // shadow_passed < 0: cast the shadow ray here; otherwise the caller already did.
     // highlight_only: the diffuse part is counted elsewhere.
-    const auto from_point_light = [&](const Vec3& position, auto&& intensity_toward,
+    const auto from_point_light = [&](const Vec3d& position, auto&& intensity_toward,
                                       double shadow_passed, bool highlight_only = false) {
-      const Vec3 to_light = position - point;
+      const Vec3d to_light = position - point;
       const double r2 = dot(to_light, to_light);
       const double distance = std::sqrt(r2);
       if (distance == 0) return;
-      const Vec3 direction = (1 / distance) * to_light;
+      const Vec3d direction = (1 / distance) * to_light;
       const double cos_alpha = dot(normal, direction);
       if (cos_alpha <= 0) return;  // grazing or behind: unlit (DESIGN.md tie-break)
       const double candela = intensity_toward(-direction);
@@ -143,13 +146,13 @@ struct RayTracer::Impl {
       if (const auto* lamp = std::get_if<PointLight>(&source.source)) {
         from_point_light(
             lamp->position,
-            [&](const Vec3& direction) {
+            [&](const Vec3d& direction) {
               return photometry::intensity_toward(*lamp->distribution, lamp->axis, lamp->c0,
                                                   direction);
             },
             -1);
       } else if (const auto* sun = std::get_if<DirectionalLight>(&source.source)) {
-        const Vec3 direction = -normalized(sun->direction);
+        const Vec3d direction = -normalized(sun->direction);
         const double cos_alpha = dot(normal, direction);
         if (cos_alpha <= 0) continue;
         const double passed = transmittance(origin, direction, kInfinity, counts);
@@ -165,19 +168,19 @@ struct RayTracer::Impl {
         for (const SourceElement& element :
              sample_tube_stratified(*tube, point, pieces, options.tube_samples, seed))
           from_point_light(
-              element.position, [&](const Vec3&) { return element.candela; }, 1, true);
+              element.position, [&](const Vec3d&) { return element.candela; }, 1, true);
       }
     }
   }
 
   // Whitted section 2: a rough surface is modelled by a random perturbation of the normal
   // (microfacets); the perturbed normal must still face the ray.
-  Vec3 perturbed_normal(const Vec3& normal, const Vec3& direction, double roughness,
-                        Random& random) const {
+  Vec3d perturbed_normal(const Vec3d& normal, const Vec3d& direction, double roughness,
+                         SplitMix64& random) const {
     if (roughness <= 0) return normal;
     for (int attempt = 0; attempt < 8; ++attempt) {
-      const Vec3 jitter{random.normal(), random.normal(), random.normal()};
-      const Vec3 candidate = normalized(normal + roughness * jitter);
+      const Vec3d jitter{random.normal(), random.normal(), random.normal()};
+      const Vec3d candidate = normalized(normal + roughness * jitter);
       if (dot(direction, candidate) < 0) return candidate;
     }
     return normal;
@@ -190,7 +193,7 @@ struct RayTracer::Impl {
     return std::max(0.0, 1 - distance / embree.scale());
   }
 
-  TraceResult shade(const Ray& ray, int depth, double weight, Random& random,
+  TraceResult shade(const Ray& ray, int depth, double weight, SplitMix64& random,
                     RayCounts& counts) const {
     TraceResult result;
     result.distance = kInfinity;
@@ -201,22 +204,22 @@ struct RayTracer::Impl {
     result.distance = hit->distance;
     const Object& object = scene.objects[hit->object];
     const Material& material = scene.materials[object.material];
-    const Vec3& direction = ray.direction;
+    const Vec3d& direction = ray.direction;
 
     // Section 2 sign conventions: N toward the incoming ray, k_n inverted when leaving.
     const FacingSurface surface = face_the_ray(direction, hit->normal, material.ior);
-    const Vec3 to_viewer = -direction;
+    const Vec3d to_viewer = -direction;
     DirectLight light{surface.normal, to_viewer, &material};
     const bool inside = dot(surface.normal, hit->normal) < 0;
     gather(hit->point, ShadedSurface{hit->object, inside}, light, random, counts);
-    const double diffuse = material.reflectance * light.illuminance / M_PI;
+    const double diffuse = material.reflectance * light.illuminance / pi;
     for (int c = 0; c < 3; ++c) result.radiance[c] = diffuse * material.color[c] + light.specular;
 
     if (depth >= options.max_depth) return result;
     double k_s = material.reflect;
     double k_t = material.transmit;
     if (k_s <= 0 && k_t <= 0) return result;
-    const Vec3 normal = perturbed_normal(surface.normal, direction, material.roughness, random);
+    const Vec3d normal = perturbed_normal(surface.normal, direction, material.roughness, random);
     if (options.fresnel && material.ior != 1) {
       // Section 2: "for the best accuracy they should be functions that incorporate ... the
       // Fresnel reflection law": k_s = F, and what is not reflected is transmitted.
@@ -226,7 +229,7 @@ struct RayTracer::Impl {
       k_t = material.transmit * (1 - reflectance);
     }
     if (k_s > 0 && weight * k_s >= options.min_weight) {
-      Vec3 reflected = reflected_direction(direction, normal);
+      Vec3d reflected = reflected_direction(direction, normal);
       if (dot(reflected, surface.normal) <= 0)
         reflected = reflected_direction(direction, surface.normal);
       ++counts.reflected;
@@ -236,7 +239,7 @@ struct RayTracer::Impl {
       for (int c = 0; c < 3; ++c) result.radiance[c] += factor * s.radiance[c];
     }
     if (k_t > 0 && weight * k_t >= options.min_weight) {
-      std::optional<Vec3> transmitted;
+      std::optional<Vec3d> transmitted;
       if (object.solid.is_flat()) {
         transmitted = direction;  // a sheet of no thickness: in and out at once, unbent
       } else {
@@ -264,15 +267,15 @@ RayTracer::~RayTracer() = default;
 
 TraceResult RayTracer::trace(const Vec3d& origin, const Vec3d& direction, std::uint64_t sample_key,
                              RayCounts& counts) const {
-  Random random(mix_bits(impl_->options.seed ^ sample_key));
+  SplitMix64 random(mix_bits(impl_->options.seed ^ sample_key));
   ++counts.camera;
   return impl_->shade({origin, normalized(direction)}, 0, 1, random, counts);
 }
 
 double RayTracer::illuminance(const Vec3d& point, const Vec3d& normal, std::uint64_t sample_key,
                               RayCounts& counts) const {
-  Random random(mix_bits(impl_->options.seed ^ sample_key));
-  const Vec3 unit = normalized(normal);
+  SplitMix64 random(mix_bits(impl_->options.seed ^ sample_key));
+  const Vec3d unit = normalized(normal);
   Impl::DirectLight light{unit, unit, nullptr};
   impl_->gather(point, std::nullopt, light, random, counts);
   return light.illuminance;

@@ -1,20 +1,19 @@
 #include "penumbra/raytrace/render.h"
 
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
 
-#include "penumbra/io/progress.h"
-#include "penumbra/io/tone_map.h"
+#include "penumbra/base/parallel.h"
+#include "penumbra/base/progress.h"
+#include "penumbra/base/random.h"
+#include "penumbra/base/tone_map.h"
 #include "penumbra/raytrace/anti_aliasing.h"
-#include "penumbra/raytrace/pinhole_camera.h"
+#include "penumbra/scene/camera_frame.h"
 #include "penumbra/scene/scene.h"
-#include "random.h"
 
 namespace penumbra::raytrace {
 namespace {
@@ -31,7 +30,7 @@ struct Tiles {
 // so some ray always meets it; here each bounding sphere that projects to less than a pixel
 // marks the pixels around its image, which are then cut until their squares are no larger
 // than the projected radius.
-std::vector<double> small_object_guard(const EmbreeScene& embree, const PinholeCamera& camera) {
+std::vector<double> small_object_guard(const EmbreeScene& embree, const CameraFrame& camera) {
   const int width = camera.width(), height = camera.height();
   std::vector<double> guard(static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
                             0.0);
@@ -56,39 +55,40 @@ std::vector<double> small_object_guard(const EmbreeScene& embree, const PinholeC
 
 RenderedImage render(const RayTracer& tracer, const Camera& scene_camera,
                      const RenderOptions& options) {
-  const PinholeCamera camera(scene_camera);
+  const CameraFrame camera(scene_camera);
   const int width = camera.width(), height = camera.height();
   const std::uint64_t seed = tracer.options().seed;
   RenderedImage image;
   image.width = width;
   image.height = height;
   const std::size_t pixel_count = static_cast<std::size_t>(width) * height;
-  image.pixels.assign(pixel_count, Radiance{0, 0, 0});
+  image.pixels.assign(pixel_count, Colour{0, 0, 0});
   const Tiles tiles{(width + kTile - 1) / kTile, (height + kTile - 1) / kTile};
   tbb::enumerable_thread_specific<RayCounts> thread_counts;
 
   const auto sample_at = [&](double x, double y, RayCounts& counts) {
     // Each sample seeds its own random stream from its position: shared corners agree and
     // the image does not depend on the order in which tiles run.
-    return tracer.trace(camera.eye(), camera.direction(x, y), position_key(seed, x, y), counts)
+    return tracer.trace(camera.eye(), camera.unit_direction(x, y), position_key(seed, x, y), counts)
         .radiance;
   };
   const bool adaptive = options.anti_aliasing == AntiAliasing::adaptive;
-  io::Progress progress("raytrace", static_cast<std::size_t>(tiles.count()) +
-                                        (adaptive ? static_cast<std::size_t>(height + 1) : 0));
+  Progress progress("raytrace", static_cast<std::size_t>(tiles.count()) +
+                                    (adaptive ? static_cast<std::size_t>(height + 1) : 0));
 
-  std::vector<Radiance> corners;
+  std::vector<Colour> corners;
   if (adaptive) {
     // Section 3, Fig. 5a: every pixel corner is a sample point shared by up to four pixels.
     const auto corner_width = static_cast<std::size_t>(width) + 1;
-    corners.assign(corner_width * static_cast<std::size_t>(height + 1), Radiance{0, 0, 0});
-    tbb::parallel_for(0, height + 1, [&](int j) {
+    corners.assign(corner_width * static_cast<std::size_t>(height + 1), Colour{0, 0, 0});
+    for_each_index(static_cast<std::size_t>(height + 1), true, [&](std::size_t row) {
+      const int j = static_cast<int>(row);
       RayCounts& counts = thread_counts.local();
       for (int i = 0; i <= width; ++i)
         corners[static_cast<std::size_t>(j) * corner_width + i] = sample_at(i, j, counts);
       if (options.progress) progress.advance();
     });
-    image.exposure = options.exposure ? *options.exposure : io::auto_exposure(corners);
+    image.exposure = options.exposure ? *options.exposure : auto_exposure(corners);
   }
 
   const std::vector<double> guard =
@@ -98,14 +98,15 @@ RenderedImage render(const RayTracer& tracer, const Camera& scene_camera,
   const int grid =
       options.anti_aliasing == AntiAliasing::fixed ? std::max(1, options.fixed_grid) : 1;
 
-  tbb::parallel_for(0, tiles.count(), [&](int tile) {
+  for_each_index(static_cast<std::size_t>(tiles.count()), true, [&](std::size_t index) {
+    const int tile = static_cast<int>(index);
     RayCounts& counts = thread_counts.local();
     const int i_begin = (tile % tiles.columns) * kTile, j_begin = (tile / tiles.columns) * kTile;
     const SampleFunction sample = [&](double x, double y) { return sample_at(x, y, counts); };
     for (int j = j_begin; j < std::min(height, j_begin + kTile); ++j)
       for (int i = i_begin; i < std::min(width, i_begin + kTile); ++i) {
         const std::size_t index = static_cast<std::size_t>(j) * width + i;
-        Radiance& pixel = image.pixels[index];
+        Colour& pixel = image.pixels[index];
         if (adaptive) {
           const auto corner_width = static_cast<std::size_t>(width) + 1;
           const auto at = [&](int ci, int cj) {
@@ -120,7 +121,7 @@ RenderedImage render(const RayTracer& tracer, const Camera& scene_camera,
           // Pixel centres, or the centres of a fixed grid of sub-squares.
           for (int b = 0; b < grid; ++b)
             for (int a = 0; a < grid; ++a) {
-              const Radiance value = sample(i + (a + 0.5) / grid, j + (b + 0.5) / grid);
+              const Colour value = sample(i + (a + 0.5) / grid, j + (b + 0.5) / grid);
               for (int c = 0; c < 3; ++c) pixel[c] += value[c] / (grid * grid);
             }
         }
@@ -129,13 +130,15 @@ RenderedImage render(const RayTracer& tracer, const Camera& scene_camera,
   });
 
   if (!adaptive)
-    image.exposure = options.exposure ? *options.exposure : io::auto_exposure(image.pixels);
+    image.exposure = options.exposure ? *options.exposure : auto_exposure(image.pixels);
   if (options.objects) {
     image.objects.assign(pixel_count, -1);
-    tbb::parallel_for(0, height, [&](int j) {
+    for_each_index(static_cast<std::size_t>(height), true, [&](std::size_t row) {
+      const int j = static_cast<int>(row);
       thread_counts.local().camera += static_cast<std::uint64_t>(width);
       for (int i = 0; i < width; ++i) {
-        const auto object = tracer.first_object(camera.eye(), camera.direction(i + 0.5, j + 0.5));
+        const auto object =
+            tracer.first_object(camera.eye(), camera.unit_direction(i + 0.5, j + 0.5));
         if (object)
           image.objects[static_cast<std::size_t>(j) * width + i] = static_cast<long>(*object);
       }

@@ -3,24 +3,26 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/base/random.h"
+#include "penumbra/base/vec3d.h"
 #include "penumbra/scene/scene.h"
-#include "random.h"
-#include "vector3.h"
 
 namespace penumbra::raytrace {
+
+using namespace vector_ops;
 
 std::vector<SourceElement> sample_tube_stratified(const LinearLight& tube, const Vec3d& receiver,
                                                   const std::vector<TubePiece>& pieces, int samples,
                                                   std::uint64_t seed) {
   std::vector<SourceElement> elements;
-  const Vec3 along = tube.end - tube.start;
+  const Vec3d along = tube.end - tube.start;
   const double tube_length = length(along);
   double total = 0;  // parameter length of the pieces
   for (const TubePiece& piece : pieces) total += piece.high - piece.low;
   if (samples <= 0 || tube_length == 0 || total <= 0) return elements;
-  const Vec3 axis = (1 / tube_length) * along;
+  const Vec3d axis = (1 / tube_length) * along;
   const double element_length = tube_length * total / samples;
-  Random random(seed);
+  SplitMix64 random(seed);
   std::size_t piece = 0;
   double before = 0;  // parameter length of the pieces before `piece`
   for (int k = 0; k < samples; ++k) {
@@ -32,8 +34,8 @@ std::vector<SourceElement> sample_tube_stratified(const LinearLight& tube, const
     }
     const double u =
         std::clamp(pieces[piece].low + (s - before), pieces[piece].low, pieces[piece].high);
-    const Vec3 position = tube.start + u * along;
-    const Vec3 to_receiver = receiver - position;
+    const Vec3d position = tube.start + u * along;
+    const Vec3d to_receiver = receiver - position;
     const double distance = length(to_receiver);
     if (distance == 0) continue;
     // Nishita eq. (5): a Lambertian tube element sends I sin(theta) dl.

@@ -1,5 +1,7 @@
 #include "penumbra/render/isolux_belts.h"
 
+#include "penumbra/base/colour_scale.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,29 +11,8 @@
 namespace penumbra::render {
 
 Rgb8 belt_colour(double e, double maximum) {
-  // Nishita 1985 section 5: "the color of the isolux belt varies in proportion to the
-  // illuminance value ... the maximum value is assigned to red".
-  const double fraction = std::clamp(e / maximum, 0.0, 1.0);
-  const double hue = 4 * (1 - fraction);  // in sextants: 4 = blue, 0 = red
-  const int sextant = std::min(3, static_cast<int>(hue));
-  const double f = hue - sextant;
-  double r = 0, g = 0, b = 0;
-  switch (sextant) {
-    case 0:
-      r = 1, g = f;
-      break;  // red -> yellow
-    case 1:
-      r = 1 - f, g = 1;
-      break;  // yellow -> green
-    case 2:
-      g = 1, b = f;
-      break;  // green -> cyan
-    default:
-      g = 1 - f, b = 1;
-      break;  // cyan -> blue
-  }
-  const auto byte = [](double v) { return static_cast<std::uint8_t>(std::lround(255 * v)); };
-  return {byte(r), byte(g), byte(b)};
+  // Nishita 1985 section 5: the colour varies in proportion to the illuminance.
+  return scale_colour(e / maximum);
 }
 
 int isolux_band(double e, const std::vector<double>& levels) {

@@ -1,20 +1,20 @@
 #include "penumbra/render/scanline_visibility.h"
 
-#include <tbb/parallel_for.h>
+#include "penumbra/base/parallel.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
 
-#include "vector3.h"
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra::render {
 
-using namespace detail;
+using namespace vector_ops;
 
 FacePlane face_plane(const Face& face) {
-  const V3 normal = to_double(face.normal());
+  const Vec3d normal = to_double(face.normal());
   const double length = std::sqrt(dot(normal, normal));
   return {(1 / length) * normal, CGAL::to_double(face.plane.d()) / length};
 }
@@ -25,7 +25,7 @@ namespace {
 struct FrontFace {
   long object;
   int face;
-  std::vector<V3> vertices;
+  std::vector<Vec3d> vertices;
   FacePlane plane;
   double eye_distance;  // F(S, eye) > 0
 };
@@ -43,7 +43,7 @@ struct Span {
 // there, so faces passing beside the eye keep a finite projection.
 constexpr double near_depth = 1e-6;
 
-std::vector<FrontFace> front_faces(const Scene& scene, const V3& eye) {
+std::vector<FrontFace> front_faces(const Scene& scene, const Vec3d& eye) {
   std::vector<FrontFace> result;
   for (std::size_t object = 0; object < scene.objects.size(); ++object) {
     const auto& faces = scene.objects[object].solid.faces();
@@ -61,10 +61,10 @@ std::vector<FrontFace> front_faces(const Scene& scene, const V3& eye) {
 
 // cuts a front face with the scan plane through eye with normal `plane_normal` and
 // returns its span in image x, or {} when the face misses the scan line or lies behind.
-std::optional<Span> face_span(const FrontFace& face, std::size_t index, const ViewFrame& view,
-                              const V3& plane_normal, const V3& row_direction) {
+std::optional<Span> face_span(const FrontFace& face, std::size_t index, const CameraFrame& view,
+                              const Vec3d& plane_normal, const Vec3d& row_direction) {
   // the face polygon is convex, so the scan plane cuts it in one segment [A, B].
-  std::vector<V3> cut;
+  std::vector<Vec3d> cut;
   const std::size_t n = face.vertices.size();
   std::vector<double> side(n);
   for (std::size_t k = 0; k < n; ++k) side[k] = dot(plane_normal, face.vertices[k] - view.eye());
@@ -78,16 +78,16 @@ std::optional<Span> face_span(const FrontFace& face, std::size_t index, const Vi
   }
   if (cut.size() < 2) return std::nullopt;
   // the extreme cut points along right; with side == 0 vertices there may be more than two.
-  V3 a = cut[0], b = cut[0];
-  const auto lateral = [&](const V3& p) { return dot(p - view.eye(), view.right()); };
-  const auto depth = [&](const V3& p) { return dot(p - view.eye(), view.forward()); };
+  Vec3d a = cut[0], b = cut[0];
+  const auto lateral = [&](const Vec3d& p) { return dot(p - view.eye(), view.right()); };
+  const auto depth = [&](const Vec3d& p) { return dot(p - view.eye(), view.forward()); };
   // order by the angle seen from the eye within the scan plane: lateral / depth is not
   // defined behind the eye, so order along the segment's own direction instead.
-  for (const V3& p : cut) {
+  for (const Vec3d& p : cut) {
     if (dot(p - a, p - a) > 0 && dot(b - a, b - a) == 0) b = p;
   }
   if (dot(b - a, b - a) == 0) return std::nullopt;
-  for (const V3& p : cut) {
+  for (const Vec3d& p : cut) {
     // extend [a, b] to cover every cut point on the line a-b.
     const double s = dot(p - a, b - a) / dot(b - a, b - a);
     if (s < 0) a = p;
@@ -104,7 +104,7 @@ std::optional<Span> face_span(const FrontFace& face, std::size_t index, const Vi
   }
   const double width = view.width();
   const double half_width = view.half_width();
-  const auto image_x = [&](const V3& p, double d) {
+  const auto image_x = [&](const Vec3d& p, double d) {
     return (lateral(p) / d / half_width + 1) * width / 2;
   };
   const double xa = image_x(a, depth_a), xb = image_x(b, depth_b);
@@ -190,7 +190,7 @@ std::size_t resolve_row(const std::vector<Span>& spans, const std::vector<FrontF
 }  // namespace
 
 VisibilityMap scanline_visibility(const Scene& scene, const Camera& camera, bool parallel) {
-  const ViewFrame view(camera);
+  const CameraFrame view(camera);
   VisibilityMap map;
   map.width = camera.width;
   map.height = camera.height;
@@ -204,8 +204,8 @@ VisibilityMap scanline_visibility(const Scene& scene, const Camera& camera, bool
     std::vector<Span> spans;
     for (int j = first; j < last; ++j) {
       // the scan plane of row j: through the eye and the pixel centres of the row.
-      const V3 row_direction = view.direction(map.width / 2.0, j + 0.5);
-      const V3 plane_normal = cross(view.right(), row_direction);
+      const Vec3d row_direction = view.direction(map.width / 2.0, j + 0.5);
+      const Vec3d plane_normal = cross(view.right(), row_direction);
       spans.clear();
       for (std::size_t k = 0; k < faces.size(); ++k)
         if (auto span = face_span(faces[k], k, view, plane_normal, row_direction))
@@ -215,13 +215,10 @@ VisibilityMap scanline_visibility(const Scene& scene, const Camera& camera, bool
                                  &map.faces[map.index(0, j)]);
     }
   };
-  if (parallel) {
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, map.height),
-        [&](const tbb::blocked_range<int>& rows) { run_rows(rows.begin(), rows.end()); });
-  } else {
-    run_rows(0, map.height);
-  }
+  for_each_range(static_cast<std::size_t>(map.height), parallel,
+                 [&](std::size_t first, std::size_t last) {
+                   run_rows(static_cast<int>(first), static_cast<int>(last));
+                 });
   map.spans = span_count;
   map.pieces = piece_count;
   return map;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include "penumbra/base/numbers.h"
 
 namespace penumbra {
 
@@ -14,7 +15,7 @@ CameraFrame::CameraFrame(const Camera& camera)
   forward_ = normalized(camera.target - camera.eye);
   right_ = normalized(cross(forward_, camera.up));
   up_ = cross(right_, forward_);
-  half_height_ = std::tan(camera.fov_deg * (M_PI / 180) / 2);
+  half_height_ = std::tan(camera.fov_deg * (pi / 180) / 2);
   half_width_ = half_height_ * width_ / height_;
 }
 
@@ -22,6 +23,10 @@ Vec3d CameraFrame::direction(double x, double y) const {
   const double across = (2 * x / width_ - 1) * half_width_;
   const double down = (1 - 2 * y / height_) * half_height_;
   return forward_ + across * right_ + down * up_;
+}
+
+Vec3d CameraFrame::unit_direction(double x, double y) const {
+  return normalized(direction(x, y));
 }
 
 std::optional<std::array<double, 3>> CameraFrame::project(const Vec3d& p) const {

@@ -4,7 +4,7 @@
 #include <limits>
 #include <sstream>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 
 namespace penumbra::detail {
 namespace {

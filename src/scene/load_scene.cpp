@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "json_cursor.h"
+#include "penumbra/base/input_error.h"
 #include "penumbra/geometry/geometry_error.h"
-#include "penumbra/input_error.h"
 #include "penumbra/scene/mesh_file.h"
 #include "sphere_points.h"
 

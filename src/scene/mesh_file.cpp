@@ -6,8 +6,8 @@
 #include <numeric>
 #include <sstream>
 
+#include "penumbra/base/input_error.h"
 #include "penumbra/geometry/geometry_error.h"
-#include "penumbra/input_error.h"
 
 namespace penumbra {
 namespace {

@@ -1,11 +1,11 @@
 #include "sphere_points.h"
 
 #include <cmath>
+#include "penumbra/base/numbers.h"
 
 namespace penumbra::detail {
 
 std::vector<Vec3d> sphere_points(const Vec3d& center, double radius, int segments) {
-  const double pi = std::acos(-1.0);
   const int bands = std::max(2, segments / 2);
   std::vector<Vec3d> points;
   points.push_back({center[0], center[1], center[2] + radius});

@@ -5,6 +5,8 @@
 
 #include "http_api.h"
 
+#include <filesystem>
+
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -86,7 +88,8 @@ nlohmann::json scene_json(const LightingSession& session) {
         {"width", basis.camera->width},          {"height", basis.camera->height}};
   nlohmann::json lights = nlohmann::json::array();
   for (const LampState& lamp : session.lamps()) lights.push_back(describe(lamp));
-  return {{"scene_file", basis.scene_file},
+  // The file's name only: the page must not show a path of the machine serving it.
+  return {{"scene_file", std::filesystem::path(basis.scene_file).filename().string()},
           {"patches", basis.mesh.size()},
           {"vertices", basis.mesh.vertices().size()},
           {"channels", basis.channels},
@@ -254,7 +257,9 @@ void register_routes(httplib::Server& server, LightingSession& session, std::mut
     const std::string allow = response.status == 404 ? allowed_methods(request.path) : "";
     if (!allow.empty()) {
       response.set_header("Allow", allow);
-      return send_error(response, 405, request.method + " not allowed on " + request.path + " (allowed: " + allow + ")");
+      return send_error(
+          response, 405,
+          request.method + " not allowed on " + request.path + " (allowed: " + allow + ")");
     }
     const int status = response.status;
     const std::string message = status == 413 ? "request body too large"

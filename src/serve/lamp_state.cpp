@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/legendre_series.h"
 #include "penumbra/basis/relight.h"
 #include "penumbra/basis/sigma_factors.h"
@@ -12,8 +13,6 @@
 namespace penumbra::serve {
 using namespace penumbra::vector_ops;
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 nlohmann::json vector_json(const Vec3d& v) {
   return {v[0], v[1], v[2]};

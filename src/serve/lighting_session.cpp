@@ -2,13 +2,16 @@
 
 #include "penumbra/serve/lighting_session.h"
 
+#include <filesystem>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <variant>
 
+#include "penumbra/base/input_error.h"
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/distribution_fit.h"
-#include "penumbra/input_error.h"
 #include "penumbra/scene/scene.h"
 
 namespace penumbra::serve {
@@ -131,11 +134,11 @@ RelitScene relight_scene(const basis::BasisLuminances& basis, const basis::Light
   out.vertex_luminance = basis::relight(basis, lighting, true).vertex_luminance;
   const Eigen::Index vertices = out.vertex_luminance.rows();
   out.vertex_lux.resize(vertices);
-  constexpr float pi = 3.14159265358979f;
+  constexpr float pi_f = static_cast<float>(pi);
   for (Eigen::Index v = 0; v < vertices; ++v) {
     float e[3];
     for (int c = 0; c < 3; ++c)
-      e[c] = reflectance(v, c) > 0 ? pi * out.vertex_luminance(v, c) / reflectance(v, c) : 0.0f;
+      e[c] = reflectance(v, c) > 0 ? pi_f * out.vertex_luminance(v, c) / reflectance(v, c) : 0.0f;
     out.vertex_lux[v] = static_cast<float>(photometric(e[0], e[1], e[2]));
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -212,7 +215,9 @@ nlohmann::json LightingSession::lighting_json() const {
     }
     lights.push_back(entry);
   }
-  return {{"penumbra_lighting", 1}, {"scene", basis_.scene_file}, {"lights", lights}};
+  return {{"penumbra_lighting", 1},
+          {"scene", std::filesystem::path(basis_.scene_file).filename().string()},
+          {"lights", lights}};
 }
 
 void LightingSession::load_lighting_json(const nlohmann::json& lighting) {

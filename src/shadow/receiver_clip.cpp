@@ -130,10 +130,10 @@ std::optional<Ring2> ReceiverClip::clip(const std::vector<Plane3>& volume) const
           plane.d();
     }
     const CGAL::Uncertain<bool> a_zero = CGAL::is_zero(a), b_zero = CGAL::is_zero(b);
-    const bool constant = CGAL::is_certain(a_zero) && CGAL::is_certain(b_zero)
-                              ? a_zero.make_certain() && b_zero.make_certain()
-                              : CGAL::is_zero(line_of(trace_id).a) &&
-                                    CGAL::is_zero(line_of(trace_id).b);
+    const bool constant =
+        CGAL::is_certain(a_zero) && CGAL::is_certain(b_zero)
+            ? a_zero.make_certain() && b_zero.make_certain()
+            : CGAL::is_zero(line_of(trace_id).a) && CGAL::is_zero(line_of(trace_id).b);
     if (constant) {
       // A trace parallel to the face: all or nothing, as in clip().
       const CGAL::Uncertain<bool> negative = CGAL::is_negative(c);

@@ -4,12 +4,13 @@
 #include <chrono>
 #include <numeric>
 
-#include "penumbra/input_error.h"
-#include "penumbra/parallel.h"
+#include "penumbra/base/input_error.h"
+#include "penumbra/base/parallel.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/shadow_polygon.h"
 #include "penumbra/visibility/lighting_sphere.h"
 #include "receiver_clip.h"
+#include "swept_region.h"
 
 namespace penumbra {
 namespace {
@@ -22,94 +23,152 @@ std::optional<LightPosition> position_of(const Light& light) {
   return std::nullopt;
 }
 
-std::optional<LightingSphere> sphere_of(const Light& light, const ShadowOptions& options) {
-  const auto* point = std::get_if<PointLight>(&light.source);
-  if (!point) return std::nullopt;
-  const Point3 centre = to_exact(point->position);
-  if (options.range_lux)
-    return LightingSphere::absolute(centre, point->distribution->max_intensity(),
-                                    *options.range_lux);
-  // The partial sphere of lighting of photometry/figures.h (Nishita section 3.1):
-  // light below range_fraction of the display's full scale is insignificant.
-  if (options.range_fraction > 0)
-    return LightingSphere::absolute(centre, point->distribution->max_intensity(),
-                                    options.range_fraction * options.full_scale_lux);
-  return std::nullopt;
+// The threshold illuminance of the partial sphere of lighting of photometry/figures.h
+// (Nishita section 3.1): light below range_fraction of the display's full scale is
+// insignificant. 0: no range culling.
+double range_threshold(const ShadowOptions& options) {
+  return options.range_lux ? *options.range_lux : options.range_fraction * options.full_scale_lux;
 }
 
-// returns every other object for each receiver (no broad phase).
-std::vector<std::vector<std::size_t>> all_pairs(const Scene& scene,
-                                                const std::vector<Receiver>& receivers) {
-  std::vector<std::vector<std::size_t>> candidates(receivers.size());
-  for (std::size_t a = 0; a < receivers.size(); ++a)
-    for (std::size_t o = 0; o < scene.objects.size(); ++o)
-      if (o != receivers[a].object) candidates[a].push_back(o);
-  return candidates;
-}
-
-// puts each receiver's occluders in canonical order (by object name: rank),
-// whatever the input order, and counts the pairs tested.
-void rank_candidates(std::vector<std::vector<std::size_t>>& candidates,
-                     const std::vector<std::size_t>& rank, ShadowStats& stats) {
-  for (auto& list : candidates) {
-    std::sort(list.begin(), list.end(),
-              [&](std::size_t a, std::size_t b) { return rank[a] < rank[b]; });
-    stats.pairs_tested += list.size();
+// The per-light work shared by point, directional and linear sources: the receivers, the
+// objects, their canonical rank and the options.
+class LightShading {
+ public:
+  LightShading(const Scene& scene, const std::vector<Receiver>& receivers,
+               const std::vector<std::size_t>& rank, std::size_t light_index,
+               const ShadowOptions& options)
+      : scene_(scene), receivers_(receivers), rank_(rank), options_(options) {
+    result_.light = light_index;
+    result_.faces.resize(receivers.size());
+    result_.stats.faces = receivers.size();
+    result_.stats.pairs_possible = receivers.size() * (scene.objects.size() - 1);
+    for (const Object& object : scene.objects) solids_.push_back(&object.solid);
   }
-}
 
-// returns the shadows of light light_index before any face is computed: one empty entry
-// per receiver and the pair counts.
-LightShadows empty_result(const Scene& scene, const std::vector<Receiver>& receivers,
-                          std::size_t light_index) {
-  LightShadows result;
-  result.light = light_index;
-  result.faces.resize(receivers.size());
-  result.stats.faces = receivers.size();
-  result.stats.pairs_possible = receivers.size() * (scene.objects.size() - 1);
-  return result;
-}
+  const Light& light() const { return scene_.lights[result_.light]; }
+  const Face& face(const Receiver& receiver) const {
+    return scene_.objects[receiver.object].solid.faces()[receiver.face];
+  }
+
+  // Culling (Nishita 1985 section 3.1): calls away(r) for each receiver r wholly unlit
+  // because it faces away, marks those outside the sphere of lighting, and keeps the rest
+  // as the active ones to compute.
+  template <class FacesAway>
+  void cull(const std::optional<LightingSphere>& sphere, bool linear, FacesAway&& away) {
+    if (sphere) result_.stats.radius = sphere->radius();
+    for (std::size_t r = 0; r < receivers_.size(); ++r) {
+      const Face& receiving = face(receivers_[r]);
+      if (away(r, receiving)) continue;
+      if (sphere && sphere->beyond(receiving)) {
+        result_.faces[r].beyond_range = true;
+        result_.faces[r].linear = linear;
+        ++result_.stats.beyond_range;
+        far_.push_back(r);
+      } else {
+        active_.push_back(r);
+      }
+    }
+  }
+
+  // returns, for each receiver slot in slots, its candidate occluders: the broad phase's
+  // (through candidates_of) or every other object.
+  template <class Candidates>
+  std::vector<std::vector<std::size_t>> candidates(const std::vector<std::size_t>& slots,
+                                                   Candidates&& candidates_of) const {
+    std::vector<Receiver> chosen;
+    for (std::size_t r : slots) chosen.push_back(receivers_[r]);
+    if (options_.broad_phase) return candidates_of(solids_, chosen);
+    std::vector<std::vector<std::size_t>> all(chosen.size());
+    for (std::size_t a = 0; a < chosen.size(); ++a)
+      for (std::size_t o = 0; o < scene_.objects.size(); ++o)
+        if (o != chosen[a].object) all[a].push_back(o);
+    return all;
+  }
+
+  // puts each active receiver's occluders in canonical order (by object name: rank),
+  // whatever the input order, and counts the pairs tested.
+  void rank(std::vector<std::vector<std::size_t>>& candidates) {
+    for (auto& list : candidates) {
+      std::sort(list.begin(), list.end(),
+                [&](std::size_t a, std::size_t b) { return rank_[a] < rank_[b]; });
+      result_.stats.pairs_tested += list.size();
+    }
+  }
+
+  // With options.occluders_beyond_range: lists for each face beyond the sphere of lighting
+  // the objects that may shadow it from the source q1 q2 (q1 = q2 for a point source).
+  template <class Candidates>
+  void list_far_occluders(const Point3& q1, const Point3& q2, Candidates&& candidates_of) {
+    if (!options_.occluders_beyond_range || far_.empty()) return;
+    const auto far_candidates = candidates(far_, candidates_of);
+    for_each_index(far_.size(), options_.parallel, [&](std::size_t a) {
+      const std::size_t r = far_[a];
+      const detail::SweptRegion swept(face(receivers_[r]), q1, q2);
+      for (std::size_t o : far_candidates[a])
+        if (!swept.separated_from(*solids_[o])) result_.faces[r].possible_occluders.push_back(o);
+    });
+  }
+
+  // returns the ranked candidate occluders of each active receiver (see shade).
+  template <class Candidates>
+  std::vector<std::vector<std::size_t>> active_candidates(Candidates&& candidates_of) {
+    auto candidates_of_active = candidates(active_, candidates_of);
+    rank(candidates_of_active);
+    return candidates_of_active;
+  }
+
+  // computes shade(receiver, occluders) for every active receiver, in parallel, with its
+  // candidates from active_candidates, and finishes the statistics.
+  template <class Shade>
+  LightShadows shade(const std::vector<std::vector<std::size_t>>& candidates, Shade&& shade_one) {
+    for_each_index(active_.size(), options_.parallel, [&](std::size_t a) {
+      result_.faces[active_[a]] = shade_one(receivers_[active_[a]], candidates[a]);
+    });
+    for (const FaceShadow& face : result_.faces) {
+      result_.stats.faces_away += face.faces_away;
+      result_.stats.pairs_shadowing += face.occluders.size();
+    }
+    return std::move(result_);
+  }
+
+  LightShadows& result() { return result_; }
+
+ private:
+  const Scene& scene_;
+  const std::vector<Receiver>& receivers_;
+  const std::vector<std::size_t>& rank_;
+  const ShadowOptions& options_;
+  std::vector<const ConvexPolyhedron*> solids_;
+  LightShadows result_;
+  std::vector<std::size_t> active_, far_;  // receiver slots to compute / beyond range
+};
 
 LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receivers,
                          const std::vector<std::size_t>& rank, std::size_t light_index,
                          const ShadowOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const Light& light = scene.lights[light_index];
-  const LightPosition position = *position_of(light);
-  const auto sphere = sphere_of(light, options);
+  LightShading shading(scene, receivers, rank, light_index, options);
+  const LightPosition position = *position_of(shading.light());
+  std::optional<LightingSphere> sphere;
+  if (const auto* point = std::get_if<PointLight>(&shading.light().source))
+    if (range_threshold(options) > 0)
+      sphere = LightingSphere::absolute(position.point(), point->distribution->max_intensity(),
+                                        range_threshold(options));
 
-  LightShadows result = empty_result(scene, receivers, light_index);
-  ShadowStats& stats = result.stats;
-  if (sphere) stats.radius = sphere->radius();
+  // Faces turned away are wholly unlit (Nishita 1985 section 3.1); the sun has no sphere.
+  shading.cull(sphere, false, [&](std::size_t r, const Face& face) {
+    if (!faces_away(face, position)) return false;
+    shading.result().faces[r] = unlit_face(face);
+    return true;
+  });
+  const auto candidates_of = [&](const std::vector<const ConvexPolyhedron*>& solids,
+                                 const std::vector<Receiver>& chosen) {
+    return candidate_occluders(solids, chosen, position);
+  };
+  if (!position.at_infinity())
+    shading.list_far_occluders(position.point(), position.point(), candidates_of);
 
-  // Culling: faces turned away are wholly unlit; faces outside the sphere of
-  // lighting are not computed (Nishita 1985 section 3.1).
-  std::vector<Receiver> active;
-  std::vector<std::size_t> active_index;
-  for (std::size_t r = 0; r < receivers.size(); ++r) {
-    const Face& face = scene.objects[receivers[r].object].solid.faces()[receivers[r].face];
-    if (faces_away(face, position)) {
-      result.faces[r] = unlit_face(face);
-      ++stats.faces_away;
-    } else if (sphere && sphere->beyond(face)) {
-      result.faces[r].beyond_range = true;
-      ++stats.beyond_range;
-    } else {
-      active.push_back(receivers[r]);
-      active_index.push_back(r);
-    }
-  }
-
-  std::vector<std::vector<std::size_t>> candidates;
-  if (options.broad_phase) {
-    std::vector<const ConvexPolyhedron*> solids;
-    for (const Object& object : scene.objects) solids.push_back(&object.solid);
-    candidates = candidate_occluders(solids, active, position);
-  } else {
-    candidates = all_pairs(scene, active);
-  }
-  rank_candidates(candidates, rank, stats);
-
+  const auto candidates = shading.active_candidates(candidates_of);
   // The shadow volume of each occluder depends only on the light: build it once.
   std::vector<char> needed(scene.objects.size(), 0);
   for (const auto& list : candidates)
@@ -118,26 +177,21 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
   for_each_index(scene.objects.size(), options.parallel, [&](std::size_t o) {
     if (needed[o]) volumes[o] = shadow_volume(scene.objects[o].solid, position);
   });
-
-  auto shade = [&](std::size_t a) {
-    const Face& face = scene.objects[active[a].object].solid.faces()[active[a].face];
-    if (candidates[a].empty()) {
-      result.faces[active_index[a]] = unite_shadows(face, {});
-      return;
-    }
-    // The face's ring and frame, exact and in intervals, once for all its occluders.
-    const detail::ReceiverClip receiver(face);
-    std::vector<OccluderShadow> shadows;
-    for (std::size_t occluder : candidates[a])
-      if (auto polygon =
-              detail::shadow_polygon(scene.objects[occluder].solid, volumes[occluder], receiver))
-        shadows.push_back({occluder, std::move(*polygon)});
-    result.faces[active_index[a]] = unite_shadows(receiver.ring(), std::move(shadows));
-  };
-  for_each_index(active.size(), options.parallel, shade);
-
-  for (const FaceShadow& face : result.faces) stats.pairs_shadowing += face.occluders.size();
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  LightShadows result = shading.shade(
+      candidates, [&](const Receiver& receiver, const std::vector<std::size_t>& occluders) {
+        const Face& face = shading.face(receiver);
+        if (occluders.empty()) return unite_shadows(face, {});
+        // The face's ring and frame, exact and in intervals, once for all its occluders.
+        const detail::ReceiverClip clip(face);
+        std::vector<OccluderShadow> shadows;
+        for (std::size_t occluder : occluders)
+          if (auto polygon =
+                  detail::shadow_polygon(scene.objects[occluder].solid, volumes[occluder], clip))
+            shadows.push_back({occluder, std::move(*polygon)});
+        return unite_shadows(clip.ring(), std::move(shadows));
+      });
+  result.stats.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
@@ -147,69 +201,44 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
                           const std::vector<std::size_t>& rank, std::size_t light_index,
                           const ShadowOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const Light& light = scene.lights[light_index];
+  LightShading shading(scene, receivers, rank, light_index, options);
+  const Light& light = shading.light();
   const auto& tube = std::get<LinearLight>(light.source);
   // End points in lexicographic order: the loops (which start at C1) must not
   // depend on the order the file lists them in.
   Point3 q1 = to_exact(tube.start), q2 = to_exact(tube.end);
   if (CGAL::compare_xyz(q2, q1) == CGAL::SMALLER) std::swap(q1, q2);
 
-  LightShadows result = empty_result(scene, receivers, light_index);
-  ShadowStats& stats = result.stats;
-
   std::optional<LightingSphere> sphere;
-  const double threshold =
-      options.range_lux ? *options.range_lux : options.range_fraction * options.full_scale_lux;
-  if (threshold > 0)
-    sphere = LightingSphere::around_segment(q1, q2, tube.candela_per_metre, threshold);
-  if (sphere) stats.radius = sphere->radius();
-  std::vector<Receiver> active;
-  std::vector<std::size_t> active_index;
-  for (std::size_t r = 0; r < receivers.size(); ++r) {
-    const Face& face = scene.objects[receivers[r].object].solid.faces()[receivers[r].face];
-    if (sphere && sphere->beyond(face)) {
-      result.faces[r].beyond_range = true;
-      result.faces[r].linear = true;
-      ++stats.beyond_range;
-    } else {
-      active.push_back(receivers[r]);
-      active_index.push_back(r);
-    }
-  }
-
-  std::vector<const ConvexPolyhedron*> solids;
-  for (const Object& object : scene.objects) solids.push_back(&object.solid);
-  std::vector<std::vector<std::size_t>> candidates;
-  if (options.broad_phase) {
-    candidates = candidate_occluders(solids, active, q1, q2);
-  } else {
-    candidates = all_pairs(scene, active);
-  }
-  rank_candidates(candidates, rank, stats);
-
-  auto shade = [&](std::size_t a) {
-    const Object& object = scene.objects[active[a].object];
-    const Face& face = object.solid.faces()[active[a].face];
-    std::vector<Occluder> occluders;
-    for (std::size_t o : candidates[a]) occluders.push_back({o, &scene.objects[o].solid});
-    try {
-      result.faces[active_index[a]] = linear_face_shadow(face, q1, q2, std::move(occluders));
-    } catch (const std::domain_error&) {
-      throw InputError(scene.file.string(), light.json_path,
-                       "the linear source '" + light.name +
-                           "' touches or passes through an "
-                           "object that shadows face " +
-                           std::to_string(active[a].face) + " of '" + object.name +
-                           "': not supported (docs/linear-shadows.md)");
-    }
+  if (range_threshold(options) > 0)
+    sphere =
+        LightingSphere::around_segment(q1, q2, tube.candela_per_metre, range_threshold(options));
+  // linear_face_shadow decides faces turned away itself (the S3 clipping of Fig. 7).
+  shading.cull(sphere, true, [](std::size_t, const Face&) { return false; });
+  const auto candidates_of = [&](const std::vector<const ConvexPolyhedron*>& solids,
+                                 const std::vector<Receiver>& chosen) {
+    return candidate_occluders(solids, chosen, q1, q2);
   };
-  for_each_index(active.size(), options.parallel, shade);
+  shading.list_far_occluders(q1, q2, candidates_of);
 
-  for (const FaceShadow& face : result.faces) {
-    stats.faces_away += face.faces_away;
-    stats.pairs_shadowing += face.occluders.size();
-  }
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  LightShadows result = shading.shade(
+      shading.active_candidates(candidates_of),
+      [&](const Receiver& receiver, const std::vector<std::size_t>& candidates) {
+        std::vector<Occluder> occluders;
+        for (std::size_t o : candidates) occluders.push_back({o, &scene.objects[o].solid});
+        try {
+          return linear_face_shadow(shading.face(receiver), q1, q2, std::move(occluders));
+        } catch (const std::domain_error&) {
+          throw InputError(scene.file.string(), light.json_path,
+                           "the linear source '" + light.name +
+                               "' touches or passes through an object that shadows face " +
+                               std::to_string(receiver.face) + " of '" +
+                               scene.objects[receiver.object].name +
+                               "': not supported (docs/linear-shadows.md)");
+        }
+      });
+  result.stats.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 
@@ -225,9 +254,29 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   });
   std::vector<std::size_t> rank(scene.objects.size());
   for (std::size_t k = 0; k < by_name.size(); ++k) rank[by_name[k]] = k;
-  for (std::size_t object : by_name)
-    for (std::size_t f = 0; f < scene.objects[object].solid.faces().size(); ++f)
-      result.receivers.push_back({object, f});
+  if (options.receivers) {
+    for (const Receiver& receiver : *options.receivers)
+      if (receiver.object >= scene.objects.size() ||
+          receiver.face >= scene.objects[receiver.object].solid.faces().size())
+        throw InputError(scene.file.string(), "objects",
+                         "no receiving face " + std::to_string(receiver.face) + " of object " +
+                             std::to_string(receiver.object));
+    result.receivers = *options.receivers;
+    std::sort(result.receivers.begin(), result.receivers.end(),
+              [&](const Receiver& a, const Receiver& b) {
+                return rank[a.object] != rank[b.object] ? rank[a.object] < rank[b.object]
+                                                        : a.face < b.face;
+              });
+    result.receivers.erase(std::unique(result.receivers.begin(), result.receivers.end(),
+                                       [](const Receiver& a, const Receiver& b) {
+                                         return a.object == b.object && a.face == b.face;
+                                       }),
+                           result.receivers.end());
+  } else {
+    for (std::size_t object : by_name)
+      for (std::size_t f = 0; f < scene.objects[object].solid.faces().size(); ++f)
+        result.receivers.push_back({object, f});
+  }
 
   std::vector<std::size_t> lights;
   if (options.light) {

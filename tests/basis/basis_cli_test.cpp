@@ -42,20 +42,24 @@ BOOST_AUTO_TEST_CASE(basis_relight_and_radiosity_agree) {
   const auto dir = scratch_dir("basis_cli");
   const std::string scene = fixture("scenes/basis-room.json").string();
   const std::string pbl = (dir / "room.pbl").string();
-  auto result = run_penumbra("basis " + scene + " --degree 2 --patch-size 1 --rays 64 --no-sigma -o " + pbl);
+  auto result =
+      run_penumbra("basis " + scene + " --degree 2 --patch-size 1 --rays 64 --no-sigma -o " + pbl);
   // --no-sigma belongs to relight: basis refuses it
   BOOST_TEST(result.status == 2);
   result = run_penumbra("basis " + scene + " --degree 2 --patch-size 0.5 --rays 64 -o " + pbl);
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
-  BOOST_TEST(result.out.find("light corner: degree 2, 9 basis functions") != std::string::npos, result.out);
+  BOOST_TEST(result.out.find("light corner: degree 2, 9 basis functions") != std::string::npos,
+             result.out);
 
   result = run_penumbra("relight " + pbl + " --patches " + (dir / "relit.csv").string());
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
-  result = run_penumbra("radiosity " + scene + " --patch-size 0.5 --rays 64 -o " + (dir / "solved.csv").string());
+  result = run_penumbra("radiosity " + scene + " --patch-size 0.5 --rays 64 -o " +
+                        (dir / "solved.csv").string());
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
   const auto relit = columns(read_text(dir / "relit.csv"));
   const auto solved = columns(read_text(dir / "solved.csv"));
-  for (const char* name : {"object", "face", "x", "y", "z", "nx", "ny", "nz", "area", "E_direct", "E"}) {
+  for (const char* name :
+       {"object", "face", "x", "y", "z", "nx", "ny", "nz", "area", "E_direct", "E"}) {
     BOOST_TEST_REQUIRE(relit.count(name) == 1u, name);
     BOOST_TEST_REQUIRE(solved.count(name) == 1u, name);
   }
@@ -74,7 +78,8 @@ BOOST_AUTO_TEST_CASE(basis_relight_and_radiosity_agree) {
   }
   BOOST_TEST(sum_relit == sum_solved, boost::test_tools::tolerance(0.1));
 
-  result = run_penumbra("relight " + pbl + " --aim corner=1,5,0 --scale centre=0.5 --color centre=1,0.8,0.6 -o " +
+  result = run_penumbra("relight " + pbl +
+                        " --aim corner=1,5,0 --scale centre=0.5 --color centre=1,0.8,0.6 -o " +
                         (dir / "relit.png").string() + " --width 64 --height 48");
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
   const auto size = penumbra::test::png_size(read_text(dir / "relit.png"));
@@ -95,7 +100,9 @@ BOOST_AUTO_TEST_CASE(fit_prints_a_distribution_that_meets_its_targets) {
       R"({"table_deg": [0,10,20,30,40,50,60,70,80,90,100,110,120,130,140,150,160,170,180],)"
       R"( "candela": [900,880,820,700,560,420,300,200,120,60,30,10,0,0,0,0,0,0,0]})";
   const std::string relit_csv = (dir / "wanted.csv").string();
-  BOOST_TEST_REQUIRE(run_penumbra("relight " + pbl + " --lid 'centre=" + curve + "' --patches " + relit_csv).status == 0);
+  BOOST_TEST_REQUIRE(
+      run_penumbra("relight " + pbl + " --lid 'centre=" + curve + "' --patches " + relit_csv)
+          .status == 0);
   const auto wanted = columns(read_text(relit_csv));
   std::ofstream targets(dir / "targets.csv");
   targets << "x,y,z,E\n";
@@ -110,8 +117,9 @@ BOOST_AUTO_TEST_CASE(fit_prints_a_distribution_that_meets_its_targets) {
   }
   targets.close();
   BOOST_TEST_REQUIRE(count == 6);
-  const auto result = run_penumbra("relight " + pbl + " --fit " + (dir / "targets.csv").string() +
-                                   " --fit-light centre --patches " + (dir / "fitted.csv").string());
+  const auto result =
+      run_penumbra("relight " + pbl + " --fit " + (dir / "targets.csv").string() +
+                   " --fit-light centre --patches " + (dir / "fitted.csv").string());
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
   const auto report = nlohmann::json::parse(result.out);
   BOOST_TEST(report["light"] == "centre");
@@ -134,14 +142,17 @@ BOOST_AUTO_TEST_CASE(bad_input_exits_2_and_names_it) {
   refused("basis " + scene + " --degree 21 -o " + (dir / "a.pbl").string(), "--degree");
   refused("basis " + scene + " --patch-size 0 -o " + (dir / "a.pbl").string(), "--patch-size");
   refused("basis " + scene + " --light-degree nobody=3 -o " + (dir / "a.pbl").string(), "nobody");
-  refused("radiosity " + scene + " --form-factors hemicube -o " + (dir / "a.csv").string(), "--form-factors");
+  refused("radiosity " + scene + " --form-factors hemicube -o " + (dir / "a.csv").string(),
+          "--form-factors");
   std::ofstream(dir / "junk.pbl") << "not a basis";
   refused("relight " + (dir / "junk.pbl").string() + " -o " + (dir / "a.png").string(), "junk.pbl");
   BOOST_TEST(!std::filesystem::exists(dir / "a.pbl"));
   BOOST_TEST(!std::filesystem::exists(dir / "a.csv"));
   BOOST_TEST(!std::filesystem::exists(dir / "a.png"));
   const std::string pbl = (dir / "ok.pbl").string();
-  BOOST_TEST_REQUIRE(run_penumbra("basis " + scene + " --degree 1 --patch-size 1.5 --rays 16 -o " + pbl).status == 0);
+  BOOST_TEST_REQUIRE(
+      run_penumbra("basis " + scene + " --degree 1 --patch-size 1.5 --rays 16 -o " + pbl).status ==
+      0);
   refused("relight " + pbl + " --aim nobody=1,2,3 -o " + (dir / "a.png").string(), "nobody");
   refused("relight " + pbl + " --aim corner=1,2 -o " + (dir / "a.png").string(), "--aim");
   refused("relight " + pbl + " --lid centre=lamp.txt -o " + (dir / "a.png").string(), "--lid");

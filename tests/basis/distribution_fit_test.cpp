@@ -12,10 +12,13 @@
 #include <random>
 
 #include "exact_integrals.h"
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/sh_rotation.h"
 #include "penumbra/basis/spherical_harmonics.h"
 #include "penumbra/photometry/orientation.h"
 #include "penumbra/photometry/table_distribution.h"
+
+using penumbra::pi;
 
 namespace tt = boost::test_tools;
 using namespace penumbra::basis;
@@ -129,8 +132,8 @@ BOOST_AUTO_TEST_CASE(asymmetric_grid_fits_its_azimuthal_average) {
     // Independent: adaptive Gauss-Kronrod over the whole circle.
     const double reference =
         boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
-            [&](double c) { return table.intensity(gamma, c); }, 0.0, 2 * kPi, 20, 1e-13) /
-        (2 * kPi);
+            [&](double c) { return table.intensity(gamma, c); }, 0.0, 2 * pi, 20, 1e-13) /
+        (2 * pi);
     BOOST_TEST(average(gamma) == reference, tt::tolerance(1e-11));
   }
   const LegendreFit fit = fit_legendre(table, 6, false);
@@ -148,9 +151,9 @@ BOOST_AUTO_TEST_CASE(sh_coefficients_of_an_asymmetric_distribution_aimed_in_the_
   const TiltedDistribution tilted;
   const Eigen::VectorXd c = sh_coefficients_of(tilted, 3);
   Eigen::VectorXd expected = Eigen::VectorXd::Zero(16);
-  expected[sh_index(0, 0)] = 2 * std::sqrt(4 * kPi);
-  expected[sh_index(1, 1)] = std::sqrt(4 * kPi / 3);
-  expected[sh_index(1, 0)] = 0.5 * std::sqrt(4 * kPi / 3);
+  expected[sh_index(0, 0)] = 2 * std::sqrt(4 * pi);
+  expected[sh_index(1, 1)] = std::sqrt(4 * pi / 3);
+  expected[sh_index(1, 0)] = 0.5 * std::sqrt(4 * pi / 3);
   BOOST_TEST((c - expected).cwiseAbs().maxCoeff() <= 1e-12);
   // Aimed by an axis and a C = 0 direction, the world coefficients reproduce the
   // photometry layer's intensity_toward.
@@ -172,7 +175,7 @@ BOOST_AUTO_TEST_CASE(axial_sh_coefficients_are_zonal) {
   const Eigen::VectorXd c = sh_coefficients_of(*spot, 6);
   for (int l = 0; l <= 6; ++l)
     for (int m = -l; m <= l; ++m) {
-      const double expected = m == 0 ? std::sqrt(4 * kPi / (2 * l + 1)) * 800 * (2 * l + 1) / 2.0 *
+      const double expected = m == 0 ? std::sqrt(4 * pi / (2 * l + 1)) * 800 * (2 * l + 1) / 2.0 *
                                            moment_of_legendre(10, l)
                                      : 0.0;
       BOOST_TEST(std::abs(c[sh_index(l, m)] - expected) <= 1e-10);

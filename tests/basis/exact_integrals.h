@@ -2,10 +2,9 @@
 // Closed forms the basis tests compare against (docs/basis.md derives them).
 
 #include <cmath>
+#include "penumbra/base/numbers.h"
 
 namespace penumbra::test {
-
-inline constexpr double kPi = 3.14159265358979323846;
 
 // returns the integral of x^n P_l(x) over [0, 1] for real n > -1, from
 // Gradshteyn-Ryzhik 7.126.2 with mu = n:
@@ -15,7 +14,7 @@ inline constexpr double kPi = 3.14159265358979323846;
 inline double moment_of_legendre(double n, int l) {
   const double first = 1 + n / 2 - l / 2.0;
   if (first <= 0 && first == std::floor(first)) return 0;
-  return std::sqrt(kPi) * std::pow(2.0, -n - 1) * std::tgamma(n + 1) /
+  return std::sqrt(pi) * std::pow(2.0, -n - 1) * std::tgamma(n + 1) /
          (std::tgamma(first) * std::tgamma(n / 2 + l / 2.0 + 1.5));
 }
 

@@ -67,7 +67,8 @@ BOOST_AUTO_TEST_CASE(fit_recovers_the_illuminances_of_a_known_distribution) {
   for (std::uint32_t p = 0; p < basis.mesh.size(); p += 3)
     if (wanted.total(p, 0) > 1) targets.push_back({p, wanted.total(p, 0)});
   BOOST_TEST_REQUIRE(targets.size() > 10u);
-  const DistributionFit fit = fit_distribution(basis, default_lighting(basis), 0, {0, 0, -1}, targets, 6, true);
+  const DistributionFit fit =
+      fit_distribution(basis, default_lighting(basis), 0, {0, 0, -1}, targets, 6, true);
   double largest = 0;
   for (const FitTarget& t : targets) largest = std::max(largest, t.illuminance);
   BOOST_TEST(fit.max_residual < 1e-6 * largest);
@@ -76,7 +77,8 @@ BOOST_AUTO_TEST_CASE(fit_recovers_the_illuminances_of_a_known_distribution) {
   Lighting fitted = default_lighting(basis);
   fitted[0] = fit.setting;
   const Relit again = relight(basis, fitted);
-  for (const FitTarget& t : targets) BOOST_TEST(std::abs(again.total(t.patch, 0) - t.illuminance) < 1e-4 * largest);
+  for (const FitTarget& t : targets)
+    BOOST_TEST(std::abs(again.total(t.patch, 0) - t.illuminance) < 1e-4 * largest);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -8,15 +8,16 @@
 #include <random>
 
 #include "exact_integrals.h"
+#include "penumbra/base/numbers.h"
 
+using penumbra::pi;
 using namespace penumbra::basis;
-using penumbra::test::kPi;
 using penumbra::test::moment_of_legendre;
 
 namespace {
 
 double spot(double g) {
-  return g < kPi / 2 ? 800 * std::pow(std::cos(g), 10) : 0.0;
+  return g < pi / 2 ? 800 * std::pow(std::cos(g), 10) : 0.0;
 }
 
 // the exact weights of spot: 800 (2l + 1)/2 int_0^1 x^10 P_l dx (exact_integrals.h).
@@ -76,7 +77,7 @@ BOOST_AUTO_TEST_CASE(scanned_eq_21_lacks_the_factor_2l_plus_1_over_2) {
   const std::vector<double> before = editor.weights();
   const double old_intensity = editor.control_intensities()[k], new_intensity = 300;
   editor.move_control_point(k, new_intensity);
-  const double dgamma = kPi / intervals, g = k * dgamma;
+  const double dgamma = pi / intervals, g = k * dgamma;
   for (int l = 0; l <= degree; ++l) {
     const double f = std::legendre(l, std::cos(g)) * std::sin(g);
     const double scanned = before[l] - (old_intensity - new_intensity) * f * dgamma;

@@ -7,10 +7,12 @@
 #include <cmath>
 
 #include "exact_integrals.h"
+#include "penumbra/base/numbers.h"
+
+using penumbra::pi;
 
 namespace tt = boost::test_tools;
 using namespace penumbra::basis;
-using penumbra::test::kPi;
 using penumbra::test::moment_of_legendre;
 using penumbra::test::moment_of_legendre_from;
 
@@ -52,8 +54,7 @@ BOOST_AUTO_TEST_CASE(clipped_cosine_matches_hand_derived_weights) {
   // I = max(cos g, 0): w_l = (2l + 1)/2 int_0^1 x P_l(x) dx, so
   //   w_0 = 1/4, w_1 = 1/2, w_2 = 5/2 * 1/8 = 5/16, w_3 = 0,
   //   w_4 = 9/2 * int_0^1 (35x^5 - 30x^3 + 3x)/8 dx = 9/2 * (35/6 - 30/4 + 3/2)/8 = -3/32.
-  const auto w =
-      legendre_weights([](double g) { return std::max(0.0, std::cos(g)); }, 4, {kPi / 2});
+  const auto w = legendre_weights([](double g) { return std::max(0.0, std::cos(g)); }, 4, {pi / 2});
   const double expected[] = {0.25, 0.5, 5.0 / 16, 0, -3.0 / 32};
   for (int l = 0; l <= 4; ++l) BOOST_TEST(std::abs(w[l] - expected[l]) <= 1e-15, "l " << l);
 }
@@ -62,7 +63,7 @@ BOOST_AUTO_TEST_CASE(spot_cos_power_clipped_at_90_degrees) {
   // Dobashi eq. (11), k = 10, spread 90 deg: w_l = (2l + 1)/2 int_0^1 x^10 P_l(x) dx.
   for (double k : {1.0, 3.0, 10.0, 37.5}) {
     const auto w = legendre_weights(
-        [k](double g) { return g < kPi / 2 ? std::pow(std::cos(g), k) : 0.0; }, 16, {kPi / 2});
+        [k](double g) { return g < pi / 2 ? std::pow(std::cos(g), k) : 0.0; }, 16, {pi / 2});
     for (int l = 0; l <= 16; ++l)
       BOOST_TEST(std::abs(w[l] - (2 * l + 1) / 2.0 * moment_of_legendre(k, l)) <= 2e-14,
                  "k " << k << " l " << l);
@@ -71,7 +72,7 @@ BOOST_AUTO_TEST_CASE(spot_cos_power_clipped_at_90_degrees) {
 
 BOOST_AUTO_TEST_CASE(spot_with_a_narrow_spread_uses_its_breakpoint) {
   // cos^10 inside 40 deg, dark outside: w_l = (2l + 1)/2 int_{cos 40}^1 x^10 P_l dx.
-  const double spread = 40 * kPi / 180;
+  const double spread = 40 * pi / 180;
   const auto spot = [spread](double g) { return g < spread ? std::pow(std::cos(g), 10) : 0.0; };
   const auto w = legendre_weights(spot, 10, {spread});
   const auto unaware = legendre_weights(spot, 10);
@@ -91,9 +92,9 @@ BOOST_AUTO_TEST_CASE(piecewise_linear_table_matches_its_exact_weights) {
   const std::vector<double> candela{1000, 990, 950, 880, 780, 650, 500, 340, 180, 60,
                                     0,    0,   0,   0,   0,   0,   0,   0,   0};
   std::vector<double> nodes;
-  for (int i = 0; i <= 18; ++i) nodes.push_back(i * 10 * kPi / 180);
+  for (int i = 0; i <= 18; ++i) nodes.push_back(i * 10 * pi / 180);
   const auto table = [&](double g) {
-    const double t = g / (10 * kPi / 180);
+    const double t = g / (10 * pi / 180);
     const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(t), 17);
     return candela[i] + (t - static_cast<double>(i)) * (candela[i + 1] - candela[i]);
   };
@@ -117,7 +118,7 @@ BOOST_AUTO_TEST_CASE(series_evaluates_eq_2_and_its_flux) {
              tt::tolerance(1e-15));
   BOOST_TEST(series(std::acos(x)) == series.at_cosine(x), tt::tolerance(1e-15));
   // The flux of a clipped cosine of 1 cd on axis: 2 pi int_0^1 x dx = pi = 4 pi w_0.
-  BOOST_TEST(series.flux() == kPi, tt::tolerance(1e-15));
+  BOOST_TEST(series.flux() == pi, tt::tolerance(1e-15));
 }
 
 BOOST_AUTO_TEST_CASE(truncated_series_converges_to_the_distribution) {
@@ -128,7 +129,7 @@ BOOST_AUTO_TEST_CASE(truncated_series_converges_to_the_distribution) {
     const LegendreSeries series(legendre_weights(smooth, degree));
     double worst = 0;
     for (int i = 0; i <= 180; ++i) {
-      const double g = i * kPi / 180;
+      const double g = i * pi / 180;
       worst = std::max(worst, std::abs(series(g) - smooth(g)));
     }
     BOOST_TEST(worst < previous / 10, "degree " << degree);

@@ -35,7 +35,7 @@ BOOST_AUTO_TEST_CASE(text_output_and_asymmetric_files) {
   BOOST_TEST_REQUIRE(text.status == 0, text.err);
   BOOST_TEST(text.out.find("Legendre weights") != std::string::npos);
   BOOST_TEST(text.out.find("rms") != std::string::npos);
-  const auto file = penumbra::test::shared_photometry("ldt-formats/symmetry_to_c0c90c180c270.ldt");
+  const auto file = penumbra::test::photometry_fixture("ldt-formats/symmetry_to_c0c90c180c270.ldt");
   const auto asymmetric = run_penumbra("lid fit '" + file.string() + "' --degree 6 --json");
   BOOST_TEST_REQUIRE(asymmetric.status == 0, asymmetric.err);
   const auto out = nlohmann::json::parse(asymmetric.out);

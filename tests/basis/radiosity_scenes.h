@@ -15,11 +15,13 @@ inline Scene closed_room(double size, double rho, const std::string& lamp_json) 
   std::ostringstream json;
   json.precision(17);
   const double t = 0.1, s = size;
-  const auto box = [&](const char* name, double x0, double y0, double z0, double x1, double y1, double z1) {
-    json << "{\"name\": \"" << name << "\", \"material\": \"grey\", \"box\": {\"min\": [" << x0 << ',' << y0
-         << ',' << z0 << "], \"max\": [" << x1 << ',' << y1 << ',' << z1 << "]}}";
+  const auto box = [&](const char* name, double x0, double y0, double z0, double x1, double y1,
+                       double z1) {
+    json << "{\"name\": \"" << name << "\", \"material\": \"grey\", \"box\": {\"min\": [" << x0
+         << ',' << y0 << ',' << z0 << "], \"max\": [" << x1 << ',' << y1 << ',' << z1 << "]}}";
   };
-  json << "{\"penumbra\": 1, \"materials\": {\"grey\": {\"reflectance\": " << rho << "}}, \"objects\": [";
+  json << "{\"penumbra\": 1, \"materials\": {\"grey\": {\"reflectance\": " << rho
+       << "}}, \"objects\": [";
   box("floor", 0, 0, -t, s, s, 0);
   json << ',';
   box("ceiling", 0, 0, s, s, s, s + t);

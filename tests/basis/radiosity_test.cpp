@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/basis_luminances.h"
 #include "penumbra/basis/form_factors.h"
 #include "penumbra/basis/gauss_legendre.h"
@@ -15,6 +16,7 @@
 #include "penumbra/basis/scene_radiosity.h"
 #include "radiosity_scenes.h"
 
+using penumbra::pi;
 using namespace penumbra;
 using namespace penumbra::basis;
 
@@ -23,13 +25,15 @@ namespace {
 // Siegel and Howell, Thermal Radiation Heat Transfer, configuration C-11 (Howell's
 // catalogue): two directly opposed parallel unit squares at distance 1. The closed form
 // (X = Y = 1) is F = 2/(pi X Y) { ln sqrt((1+X^2)(1+Y^2)/(1+X^2+Y^2))
-//   + X sqrt(1+Y^2) atan(X/sqrt(1+Y^2)) + Y sqrt(1+X^2) atan(Y/sqrt(1+X^2)) - X atan X - Y atan Y }.
+//   + X sqrt(1+Y^2) atan(X/sqrt(1+Y^2)) + Y sqrt(1+X^2) atan(Y/sqrt(1+X^2)) - X atan X - Y atan Y
+//   }.
 double opposed_unit_squares() {
   const double X = 1, Y = 1;
   const double a = std::sqrt(1 + X * X), b = std::sqrt(1 + Y * Y);
-  return 2 / (M_PI * X * Y) *
-         (std::log(std::sqrt((1 + X * X) * (1 + Y * Y) / (1 + X * X + Y * Y))) + X * b * std::atan(X / b) +
-          Y * a * std::atan(Y / a) - X * std::atan(X) - Y * std::atan(Y));
+  return 2 / (pi * X * Y) *
+         (std::log(std::sqrt((1 + X * X) * (1 + Y * Y) / (1 + X * X + Y * Y))) +
+          X * b * std::atan(X / b) + Y * a * std::atan(Y / a) - X * std::atan(X) -
+          Y * std::atan(Y));
 }
 
 // two flat unit squares facing each other: z = 0 facing up, z = 1 facing down
@@ -73,7 +77,8 @@ BOOST_AUTO_TEST_CASE(point_polygon_form_factor_integrates_to_the_area_form_facto
   for (std::size_t a = 0; a < rule.nodes.size(); ++a)
     for (std::size_t b = 0; b < rule.nodes.size(); ++b) {
       const Vec3d point{(rule.nodes[a] + 1) / 2, (rule.nodes[b] + 1) / 2, 0};
-      average += rule.weights[a] * rule.weights[b] / 4 * point_polygon_form_factor(point, {0, 0, 1}, square);
+      average += rule.weights[a] * rule.weights[b] / 4 *
+                 point_polygon_form_factor(point, {0, 0, 1}, square);
     }
   BOOST_TEST(average == opposed_unit_squares(), boost::test_tools::tolerance(1e-9));
   // a differential area facing a parallel rectangle a x b at height h, its normal
@@ -81,7 +86,7 @@ BOOST_AUTO_TEST_CASE(point_polygon_form_factor_integrates_to_the_area_form_facto
   //   F = 1/(2 pi) [A/sqrt(1+A^2) atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2))];
   // under the centre of the unit square at h = 1 it is four such rectangles with A = B = 1/2
   const double A = 0.5, root = std::sqrt(1 + A * A);
-  const double corner = 1 / (2 * M_PI) * 2 * (A / root) * std::atan(A / root);
+  const double corner = 1 / (2 * pi) * 2 * (A / root) * std::atan(A / root);
   BOOST_TEST(point_polygon_form_factor({0.5, 0.5, 0}, {0, 0, 1}, square) == 4 * corner,
              boost::test_tools::tolerance(1e-12));
 }
@@ -89,10 +94,11 @@ BOOST_AUTO_TEST_CASE(point_polygon_form_factor_integrates_to_the_area_form_facto
 BOOST_AUTO_TEST_CASE(point_form_factors_close_around_an_interior_point) {
   // the six faces of a cube seen from a point of its floor cover the hemisphere: sum 1
   const Vec3d p{0.3, 0.6, 0};
-  const std::vector<std::vector<Vec3d>> faces = {
-      {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}, {{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}},
-      {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}, {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}},
-      {{0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}}};
+  const std::vector<std::vector<Vec3d>> faces = {{{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+                                                 {{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1}},
+                                                 {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}},
+                                                 {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}},
+                                                 {{0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}}};
   double sum = 0;
   for (const auto& face : faces) sum += point_polygon_form_factor(p, {0, 0, 1}, face);
   BOOST_TEST(sum == 1.0, boost::test_tools::tolerance(1e-12));
@@ -108,8 +114,9 @@ BOOST_AUTO_TEST_CASE(ray_form_factors_estimate_the_area_form_factor) {
   // stratified directions do better: 0.2 of it is 3e-4
   BOOST_TEST(std::abs(estimate - opposed_unit_squares()) < 3e-4);
   // the centre-to-square value (0.2395) is far: origins must cover the patch
-  BOOST_TEST(std::abs(estimate - point_polygon_form_factor({0.5, 0.5, 0}, {0, 0, 1},
-                                                           {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}})) > 0.03);
+  BOOST_TEST(std::abs(estimate - point_polygon_form_factor(
+                                     {0.5, 0.5, 0}, {0, 0, 1},
+                                     {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}})) > 0.03);
   // the same seed gives the same estimate whatever the threads
   options.parallel = false;
   BOOST_TEST(square_to_square(mesh, form_factors(scene, mesh, options)) == estimate);
@@ -130,7 +137,8 @@ BOOST_AUTO_TEST_CASE(analytic_form_factors_converge_with_subdivision) {
       if (p.object != 0 || p.normal[2] < 0.5) continue;
       area += p.area;
       for (FormFactorMatrix::InnerIterator e(F, static_cast<std::int64_t>(i)); e; ++e)
-        if (mesh.patches()[static_cast<std::size_t>(e.col())].object == 1) sum += p.area * e.value();
+        if (mesh.patches()[static_cast<std::size_t>(e.col())].object == 1)
+          sum += p.area * e.value();
     }
     return std::abs(sum / area - opposed_unit_squares());
   };
@@ -155,7 +163,8 @@ BOOST_AUTO_TEST_CASE(jacobi_matches_a_dense_solve) {
   rho[0] = 0.95;
   Eigen::MatrixXd direct(n, columns);
   for (int i = 0; i < n; ++i)
-    for (int c = 0; c < columns; ++c) direct(i, c) = uniform(random) - 0.3;  // SH columns change sign
+    for (int c = 0; c < columns; ++c)
+      direct(i, c) = uniform(random) - 0.3;  // SH columns change sign
   FormFactorMatrix F = dense.sparseView();
   RadiosityOptions options;
   options.tolerance = 1e-12;
@@ -163,7 +172,8 @@ BOOST_AUTO_TEST_CASE(jacobi_matches_a_dense_solve) {
   BOOST_TEST(result.converged);
   const Eigen::MatrixXd expected =
       (Eigen::MatrixXd::Identity(n, n) - dense * rho.asDiagonal()).partialPivLu().solve(direct);
-  BOOST_TEST((result.illuminance - expected).cwiseAbs().maxCoeff() < 1e-9 * expected.cwiseAbs().maxCoeff());
+  BOOST_TEST((result.illuminance - expected).cwiseAbs().maxCoeff() <
+             1e-9 * expected.cwiseAbs().maxCoeff());
 }
 
 BOOST_AUTO_TEST_CASE(cie_171_test_5_8_integrating_cube) {
@@ -175,8 +185,9 @@ BOOST_AUTO_TEST_CASE(cie_171_test_5_8_integrating_cube) {
   // discretised flux against Phi and the indirect mean against the CIE formula with both.
   const double flux = 10000, S = 96;
   for (double rho : {0.05, 0.2, 0.5, 0.8, 0.95}) {
-    const Scene scene = test::closed_room(
-        4, rho, R"({"name": "bulb", "point": [2, 2, 2], "candela": )" + std::to_string(flux / (4 * M_PI)) + "}");
+    const Scene scene = test::closed_room(4, rho,
+                                          R"({"name": "bulb", "point": [2, 2, 2], "candela": )" +
+                                              std::to_string(flux / (4 * pi)) + "}");
     BasisOptions options;
     options.patch_size = 0.5;
     options.form_factors.method = FormFactorMethod::rays;
@@ -189,7 +200,9 @@ BOOST_AUTO_TEST_CASE(cie_171_test_5_8_integrating_cube) {
       // the inner faces: centres on the cube's boundary, normals pointing in
       using namespace vector_ops;
       if (dot(p.normal, Vec3d{2, 2, 2} - p.centre) <= 0) continue;
-      if (std::max({std::abs(p.centre[0] - 2), std::abs(p.centre[1] - 2), std::abs(p.centre[2] - 2)}) > 2.0001) continue;
+      if (std::max({std::abs(p.centre[0] - 2), std::abs(p.centre[1] - 2),
+                    std::abs(p.centre[2] - 2)}) > 2.0001)
+        continue;
       const auto row = static_cast<Eigen::Index>(i);
       direct_flux += p.area * solved.direct_per_light(row, 0);
       indirect_flux += p.area * (solved.total(row, 0) - solved.direct_per_light(row, 0));

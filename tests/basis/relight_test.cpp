@@ -6,10 +6,10 @@
 #include <cmath>
 #include <fstream>
 
+#include "penumbra/base/input_error.h"
 #include "penumbra/basis/basis_file.h"
 #include "penumbra/basis/relight.h"
 #include "penumbra/basis/scene_radiosity.h"
-#include "penumbra/input_error.h"
 #include "penumbra/photometry/distribution.h"
 #include "radiosity_scenes.h"
 #include "support/fixtures.h"
@@ -19,7 +19,8 @@ using namespace penumbra::basis;
 
 namespace {
 
-const char* kLamp = R"({"name": "lamp", "point": [2, 2, 3.5], "lid": {"cardioid": true, "candela": 500},
+const char* kLamp =
+    R"({"name": "lamp", "point": [2, 2, 3.5], "lid": {"cardioid": true, "candela": 500},
                         "axis": [0, 0, -1]})";
 
 BasisOptions small_options() {
@@ -67,9 +68,10 @@ BOOST_AUTO_TEST_CASE(reaimed_lamp_equals_a_solve_with_that_aiming) {
   const Vec3d target{3, 1, 0};
   const Vec3d axis = aimed({2, 2, 3.5}, target);
   Lighting lighting = default_lighting(basis);
-  const auto lid = photometry::make_distribution(nlohmann::json::parse(R"({"cardioid": true, "candela": 500})"),
-                                                 {"test", "lid", "."});
-  lighting[0].coefficients = world_coefficients(*lid, 2, axis, reaimed_c0(axis, basis.lights[0].c0), false);
+  const auto lid = photometry::make_distribution(
+      nlohmann::json::parse(R"({"cardioid": true, "candela": 500})"), {"test", "lid", "."});
+  lighting[0].coefficients =
+      world_coefficients(*lid, 2, axis, reaimed_c0(axis, basis.lights[0].c0), false);
   PointLight& lamp = std::get<PointLight>(scene.lights[0].source);
   lamp.c0 = reaimed_c0(axis, lamp.c0);  // the photometric frame must stay orthonormal
   lamp.axis = axis;
@@ -89,8 +91,9 @@ BOOST_AUTO_TEST_CASE(reaimed_lamp_equals_a_solve_with_that_aiming) {
 BOOST_AUTO_TEST_CASE(real_distribution_converges_with_degree) {
   // a measured, non-polynomial distribution: the relit result approaches the exact solve
   // as the degree grows (the paper: about 20% maximum error at degree 5-8)
-  const std::string file = test::shared_photometry("ies-real/1.IES").string();
-  const std::string lamp = R"({"name": "lamp", "point": [2, 2, 3.5], "lid": {"ies": ")" + file + R"("}})";
+  const std::string file = test::photometry_fixture("ies-real/1.IES").string();
+  const std::string lamp =
+      R"({"name": "lamp", "point": [2, 2, 3.5], "lid": {"ies": ")" + file + R"("}})";
   const Scene scene = test::closed_room(4, 0.5, lamp);
   BasisOptions options = small_options();
   const SceneRadiosity direct = solve_scene_radiosity(scene, options);
@@ -115,7 +118,8 @@ BOOST_AUTO_TEST_CASE(basis_file_round_trip_and_compression) {
   write_basis(dir / "b.pbl", basis);
   const BasisLuminances read = read_basis(dir / "b.pbl");
   BOOST_TEST(read.mesh.size() == basis.mesh.size());
-  const Relit a = relight(basis, default_lighting(basis)), b = relight(read, default_lighting(read));
+  const Relit a = relight(basis, default_lighting(basis)),
+              b = relight(read, default_lighting(read));
   BOOST_TEST((a.total - b.total).cwiseAbs().maxCoeff() == 0);
   BOOST_TEST((a.vertex_luminance - b.vertex_luminance).cwiseAbs().maxCoeff() == 0);
 
@@ -127,11 +131,13 @@ BOOST_AUTO_TEST_CASE(basis_file_round_trip_and_compression) {
   const Eigen::MatrixXf exact = basis.lights[0].total[0].full();
   BOOST_TEST(block.is_compressed());
   BOOST_TEST(block.rank() < exact.cols());
-  BOOST_TEST_MESSAGE("rank " << block.rank() << " of " << exact.cols() << ", error " << block.error());
+  BOOST_TEST_MESSAGE("rank " << block.rank() << " of " << exact.cols() << ", error "
+                             << block.error());
   BOOST_TEST((block.full() - exact).norm() <= 1.01 * 0.1 * exact.norm());
   const Eigen::VectorXf c = basis.lights[0].coefficients.cast<float>();
   const Relit s = relight(small, default_lighting(small));
-  BOOST_TEST((s.total.col(0) - a.total.col(0)).norm() <= 1.01 * 0.1 * exact.norm() * c.norm() + 1e-3);
+  BOOST_TEST((s.total.col(0) - a.total.col(0)).norm() <=
+             1.01 * 0.1 * exact.norm() * c.norm() + 1e-3);
   write_basis(dir / "small.pbl", small);
   const Relit t = relight(read_basis(dir / "small.pbl"), default_lighting(small));
   BOOST_TEST((s.total - t.total).cwiseAbs().maxCoeff() == 0);

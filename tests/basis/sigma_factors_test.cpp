@@ -6,12 +6,14 @@
 #include <cmath>
 
 #include "exact_integrals.h"
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/gauss_legendre.h"
 #include "penumbra/basis/legendre_series.h"
 
+using penumbra::pi;
+
 namespace tt = boost::test_tools;
 using namespace penumbra::basis;
-using penumbra::test::kPi;
 using penumbra::test::moment_of_legendre;
 
 BOOST_AUTO_TEST_SUITE(sigma_factors_suite)
@@ -19,8 +21,8 @@ BOOST_AUTO_TEST_SUITE(sigma_factors_suite)
 BOOST_AUTO_TEST_CASE(values_of_eq_13) {
   BOOST_TEST(sigma_factor(8, 0) == 1.0);
   // t = pi l / 9 for N = 8.
-  BOOST_TEST(sigma_factor(8, 1) == std::sin(kPi / 9) / (kPi / 9), tt::tolerance(1e-15));
-  BOOST_TEST(sigma_factor(8, 8) == std::sin(8 * kPi / 9) / (8 * kPi / 9), tt::tolerance(1e-15));
+  BOOST_TEST(sigma_factor(8, 1) == std::sin(pi / 9) / (pi / 9), tt::tolerance(1e-15));
+  BOOST_TEST(sigma_factor(8, 8) == std::sin(8 * pi / 9) / (8 * pi / 9), tt::tolerance(1e-15));
   // The factor vanishes at the first neglected degree N + 1, the ripples' frequency.
   BOOST_TEST(std::abs(sigma_factor(8, 9)) < 1e-16);
   const std::vector<double> factors = sigma_factors(8);
@@ -35,7 +37,7 @@ BOOST_AUTO_TEST_CASE(is_the_mean_of_a_mode_over_one_period_of_degree_n_plus_1) {
   // Hamming's derivation: averaging cos(l x) over a window of one period of degree
   // N + 1, width 2 pi / (N + 1), multiplies it by sigma(N, l). Checked by quadrature.
   const int degree = 8;
-  const double half_width = kPi / (degree + 1), x = 0.37;
+  const double half_width = pi / (degree + 1), x = 0.37;
   const QuadratureRule rule = mapped(gauss_legendre(40), x - half_width, x + half_width);
   for (int l = 0; l <= degree; ++l) {
     double mean = 0;
@@ -57,8 +59,8 @@ BOOST_AUTO_TEST_CASE(damp_the_ripples_of_the_spot_of_section_3_3_1) {
     BOOST_TEST(smoothed.weights()[l] == sigma_factor(8, l) * weights[l], tt::tolerance(1e-15));
   double plain_ripple = 0, smoothed_ripple = 0, plain_undershoot = 0, smoothed_undershoot = 0;
   for (int i = 0; i <= 1800; ++i) {
-    const double g = i * kPi / 1800;
-    if (g > kPi / 2) {
+    const double g = i * pi / 1800;
+    if (g > pi / 2) {
       plain_ripple = std::max(plain_ripple, std::abs(plain(g)));
       smoothed_ripple = std::max(smoothed_ripple, std::abs(smoothed(g)));
     }

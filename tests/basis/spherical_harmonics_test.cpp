@@ -9,11 +9,13 @@
 #include <random>
 
 #include "exact_integrals.h"
+#include "penumbra/base/numbers.h"
 #include "penumbra/basis/legendre_series.h"
+
+using penumbra::pi;
 
 namespace tt = boost::test_tools;
 using namespace penumbra::basis;
-using penumbra::test::kPi;
 
 namespace {
 
@@ -67,10 +69,10 @@ BOOST_AUTO_TEST_CASE(product_rule_integrates_monomials_exactly) {
     xyz += rule.weights[i] * d.x() * d.x() * d.y() * d.y() * d.z() * d.z();
     z4 += rule.weights[i] * std::pow(d.z(), 4);
   }
-  BOOST_TEST(total == 4 * kPi, tt::tolerance(1e-14));
-  BOOST_TEST(xx == 4 * kPi / 3, tt::tolerance(1e-14));
-  BOOST_TEST(xyz == 4 * kPi / 105, tt::tolerance(1e-13));
-  BOOST_TEST(z4 == 4 * kPi / 5, tt::tolerance(1e-14));
+  BOOST_TEST(total == 4 * pi, tt::tolerance(1e-14));
+  BOOST_TEST(xx == 4 * pi / 3, tt::tolerance(1e-14));
+  BOOST_TEST(xyz == 4 * pi / 105, tt::tolerance(1e-13));
+  BOOST_TEST(z4 == 4 * pi / 5, tt::tolerance(1e-14));
 }
 
 BOOST_AUTO_TEST_CASE(low_orders_match_their_cartesian_forms) {
@@ -78,15 +80,15 @@ BOOST_AUTO_TEST_CASE(low_orders_match_their_cartesian_forms) {
     const double x = d.x(), y = d.y(), z = d.z();
     const Eigen::VectorXd v = real_spherical_harmonics(2, 3.5 * d);  // length is ignored
     const auto close = [](double a, double b) { return std::abs(a - b) <= 1e-15; };
-    BOOST_TEST(close(v[sh_index(0, 0)], 1 / std::sqrt(4 * kPi)));
-    const double c1 = std::sqrt(3 / (4 * kPi));
+    BOOST_TEST(close(v[sh_index(0, 0)], 1 / std::sqrt(4 * pi)));
+    const double c1 = std::sqrt(3 / (4 * pi));
     BOOST_TEST(close(v[sh_index(1, -1)], c1 * y));
     BOOST_TEST(close(v[sh_index(1, 0)], c1 * z));
     BOOST_TEST(close(v[sh_index(1, 1)], c1 * x));
-    const double c2 = std::sqrt(15 / (4 * kPi));
+    const double c2 = std::sqrt(15 / (4 * pi));
     BOOST_TEST(close(v[sh_index(2, -2)], c2 * x * y));
     BOOST_TEST(close(v[sh_index(2, -1)], c2 * y * z));
-    BOOST_TEST(close(v[sh_index(2, 0)], std::sqrt(5 / (16 * kPi)) * (3 * z * z - 1)));
+    BOOST_TEST(close(v[sh_index(2, 0)], std::sqrt(5 / (16 * pi)) * (3 * z * z - 1)));
     BOOST_TEST(close(v[sh_index(2, 1)], c2 * x * z));
     BOOST_TEST(close(v[sh_index(2, 2)], c2 / 2 * (x * x - y * y)));
   }
@@ -125,12 +127,12 @@ BOOST_AUTO_TEST_CASE(addition_theorem_eq_7) {
     for (int l = 0; l <= degree; ++l) {
       double sum = 0;
       for (int m = -l; m <= l; ++m) sum += ya[sh_index(l, m)] * yb[sh_index(l, m)];
-      BOOST_TEST(std::abs(sum - (2 * l + 1) / (4 * kPi) * std::legendre(l, a.dot(b))) <= 1e-13,
+      BOOST_TEST(std::abs(sum - (2 * l + 1) / (4 * pi) * std::legendre(l, a.dot(b))) <= 1e-13,
                  "l " << l);
     }
     // a = b: sum_m Y_lm(a)^2 = (2l + 1) / (4 pi), whatever a.
     for (int l = 0; l <= degree; ++l)
-      BOOST_TEST(ya.segment(l * l, 2 * l + 1).squaredNorm() == (2 * l + 1) / (4 * kPi),
+      BOOST_TEST(ya.segment(l * l, 2 * l + 1).squaredNorm() == (2 * l + 1) / (4 * pi),
                  tt::tolerance(1e-13));
   }
 }
@@ -144,7 +146,7 @@ BOOST_AUTO_TEST_CASE(scanned_appendix_normalisation_breaks_the_addition_theorem)
   for (int l = 1; l <= 3; ++l) {
     double scanned = 0;
     for (int m = -l; m <= l; ++m) scanned += (m == 0 ? 1.0 : 0.5) * std::pow(v[sh_index(l, m)], 2);
-    BOOST_TEST(std::abs(scanned - (2 * l + 1) / (4 * kPi)) > 1e-3);
+    BOOST_TEST(std::abs(scanned - (2 * l + 1) / (4 * pi)) > 1e-3);
   }
 }
 
@@ -179,7 +181,7 @@ BOOST_AUTO_TEST_CASE(re_aimed_series_equals_the_legendre_series_about_the_new_ax
   const Eigen::VectorXd about_z = zonal_sh_coefficients(weights, Eigen::Vector3d::UnitZ());
   for (int l = 0; l <= 8; ++l)
     for (int m = -l; m <= l; ++m) {
-      const double expected = m == 0 ? std::sqrt(4 * kPi / (2 * l + 1)) * weights[l] : 0.0;
+      const double expected = m == 0 ? std::sqrt(4 * pi / (2 * l + 1)) * weights[l] : 0.0;
       BOOST_TEST(std::abs(about_z[sh_index(l, m)] - expected) <= 1e-15);
     }
 }
@@ -188,8 +190,8 @@ BOOST_AUTO_TEST_CASE(projection_recovers_a_band_limited_function) {
   // f = 3 + 2x - z^2: c_00 = int f Y_00 = (3 * 4 pi - 4 pi / 3) / sqrt(4 pi).
   const auto f = [](const Eigen::Vector3d& d) { return 3 + 2 * d.x() - d.z() * d.z(); };
   const Eigen::VectorXd c = project_sh(f, 4, product_sphere_quadrature(8));
-  BOOST_TEST(c[0] == (12 * kPi - 4 * kPi / 3) / std::sqrt(4 * kPi), tt::tolerance(1e-14));
-  BOOST_TEST(c[sh_index(1, 1)] == 2 * std::sqrt(4 * kPi / 3), tt::tolerance(1e-14));
+  BOOST_TEST(c[0] == (12 * pi - 4 * pi / 3) / std::sqrt(4 * pi), tt::tolerance(1e-14));
+  BOOST_TEST(c[sh_index(1, 1)] == 2 * std::sqrt(4 * pi / 3), tt::tolerance(1e-14));
   for (const Eigen::Vector3d& d : random_directions(10, 6))
     BOOST_TEST(evaluate_sh(c, d) == f(d), tt::tolerance(1e-13));
 }

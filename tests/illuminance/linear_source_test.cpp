@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/illuminance/linear_source.h"
 #include "reference_quadrature.h"
 
@@ -26,21 +27,9 @@ using penumbra::illuminance::linear_illuminance_quadrature;
 using penumbra::illuminance::outer_side_interval;
 using penumbra::illuminance::SourceInterval;
 
-const double pi = std::acos(-1.0);
+using penumbra::pi;
 
-Vec3d sub(const Vec3d& p, const Vec3d& q) {
-  return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-}
-double dot(const Vec3d& p, const Vec3d& q) {
-  return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
-}
-double length(const Vec3d& v) {
-  return std::sqrt(dot(v, v));
-}
-Vec3d unit(const Vec3d& v) {
-  const double l = length(v);
-  return {v[0] / l, v[1] / l, v[2] / l};
-}
+using namespace penumbra::vector_ops;
 
 double relative_difference(double value, double expected) {
   if (value == expected) return 0;
@@ -53,12 +42,12 @@ double relative_difference(double value, double expected) {
 // of the perpendicular with width h, so the interval is broken there and at foot +- h 10^k.
 double reference_illuminance(const Vec3d& p, const Vec3d& n, const Vec3d& a, const Vec3d& b,
                              double intensity, double u0 = 0, double u1 = 1) {
-  const Vec3d along = sub(b, a);
+  const Vec3d along = b - a;
   const double source_length = length(along);
-  const Vec3d d = unit(along);
+  const Vec3d d = normalized(along);
   // Receiving plane crossing (Fig. 7, S3), found from the signed distances of the ends.
-  const double fa = dot(n, sub(a, p));
-  const double fb = dot(n, sub(b, p));
+  const double fa = dot(n, a - p);
+  const double fb = dot(n, b - p);
   double lo = u0, hi = u1;
   if (fa <= 0 && fb <= 0) return 0;
   if (fa <= 0) lo = std::max(lo, fa / (fa - fb));
@@ -66,16 +55,16 @@ double reference_illuminance(const Vec3d& p, const Vec3d& n, const Vec3d& a, con
   if (!(hi > lo)) return 0;
   auto integrand = [&](double s) {
     const Vec3d q{a[0] + s * d[0], a[1] + s * d[1], a[2] + s * d[2]};
-    const Vec3d v = sub(q, p);
+    const Vec3d v = q - p;
     const double r = length(v);
     const Vec3d c{v[1] * d[2] - v[2] * d[1], v[2] * d[0] - v[0] * d[2], v[0] * d[1] - v[1] * d[0]};
     const double sin_theta = length(c) / r;
     const double cos_beta = dot(v, n) / r;
     return cos_beta > 0 ? sin_theta * cos_beta / (r * r) : 0.0;
   };
-  const double foot = dot(sub(p, a), d);
+  const double foot = dot(p - a, d);
   const Vec3d foot_point{a[0] + foot * d[0], a[1] + foot * d[1], a[2] + foot * d[2]};
-  const double h = length(sub(p, foot_point));
+  const double h = length(p - foot_point);
   std::vector<double> breaks{lo * source_length, hi * source_length};
   for (double k = 0; k < 1e3 * source_length && h > 0; k = (k == 0 ? h / 8 : k * 4))
     for (double s : {foot - k, foot + k})
@@ -105,7 +94,7 @@ struct Random {
     for (;;) {
       const Vec3d v = point(-1, 1);
       const double l = length(v);
-      if (l > 0.1 && l <= 1) return unit(v);
+      if (l > 0.1 && l <= 1) return normalized(v);
     }
   }
 };
@@ -147,10 +136,10 @@ BOOST_AUTO_TEST_CASE(case_a_parallel_source_matches_the_corrected_eq_7) {
     const Vec3d q1{-1, 1.5, 2.2}, q2{2.5, 1.5, 2.2};  // along +x at height 2.2
     const Vec3d tau{1, 0, 0};
     const Vec3d foot{p[0], 1.5, 2.2};
-    const double r_t = length(sub(foot, p));
-    const double u1 = dot(sub(q1, p), tau) / r_t;  // F(S_t, Q_1) / r_t, signed
-    const double u2 = dot(sub(q2, p), tau) / r_t;
-    const double f = dot(sub(q1, p), n);  // F(S_f, Q_1)
+    const double r_t = length(foot - p);
+    const double u1 = dot(q1 - p, tau) / r_t;  // F(S_t, Q_1) / r_t, signed
+    const double u2 = dot(q2 - p, tau) / r_t;
+    const double f = dot(q1 - p, n);  // F(S_f, Q_1)
     const double expected = intensity * std::abs(paper_e(u1) - paper_e(u2)) * f / (r_t * r_t);
     // Eq. (6) in angles, with signed angles (the paper's "change the sign of alpha_1" rule).
     const double alpha1 = std::atan(u1), alpha2 = std::atan(u2);
@@ -202,9 +191,9 @@ BOOST_AUTO_TEST_CASE(case_b_perpendicular_source_matches_eq_8) {
       {{5, 5, 5}, {0, -1, 0}, {5.1, 4.9, 5}, {5.1, -20, 5}},  // long tube, P close to it
   };
   for (const Case& c : cases) {
-    const double r1 = length(sub(c.q1, c.p));
-    const double r2 = length(sub(c.q2, c.p));
-    const double height1 = dot(sub(c.q1, c.p), c.n);
+    const double r1 = length(c.q1 - c.p);
+    const double r2 = length(c.q2 - c.p);
+    const double height1 = dot(c.q1 - c.p, c.n);
     const double r_t = std::sqrt(r1 * r1 - height1 * height1);
     const double expected = 0.5 * intensity * std::abs(1 / (r1 * r1) - 1 / (r2 * r2)) * r_t;
     BOOST_TEST(relative_difference(linear_illuminance(c.p, c.n, c.q1, c.q2, intensity), expected) <=
@@ -230,7 +219,7 @@ BOOST_AUTO_TEST_CASE(tube_crossing_the_receiving_plane_counts_only_the_outer_par
   BOOST_TEST(outer->second == 1.0);
   // Oblique piercing tube: closed form, library quadrature and reference agree.
   check_agreement({p, n, {1, -1, -1}, {1, 2, 3}}, 1e-10);
-  check_agreement({p, unit({0.3, -0.2, 1}), {-0.5, 0.7, 2}, {1.5, -0.4, -1}}, 1e-10);
+  check_agreement({p, normalized({0.3, -0.2, 1}), {-0.5, 0.7, 2}, {1.5, -0.4, -1}}, 1e-10);
 }
 
 BOOST_AUTO_TEST_CASE(outer_side_interval_clips_at_the_plane) {
@@ -298,12 +287,12 @@ BOOST_AUTO_TEST_CASE(random_configurations_agree_with_quadrature) {
 
 // Configurations near the places where a naive evaluation of the closed form loses digits.
 BOOST_AUTO_TEST_CASE(near_degenerate_configurations_agree_with_quadrature) {
-  const Vec3d n = unit({0.2, -0.3, 1});
+  const Vec3d n = normalized({0.2, -0.3, 1});
   const std::vector<Configuration> cases{
       // P within 1e-6 m of the tube, foot inside it (E ~ 1/h).
-      {{0.5, 1e-6, 0.2}, unit({0, 1, 0.2}), {-1, 0, 0.2}, {2, 0, 0.2}},
+      {{0.5, 1e-6, 0.2}, normalized({0, 1, 0.2}), {-1, 0, 0.2}, {2, 0, 0.2}},
       // P on the line's extension within 1e-9 m: angles near pi/2 at both ends.
-      {{3, 1e-9, 1e-9}, unit({-1, 0.3, 0.4}), {-1, 0, 0}, {2, 0, 0}},
+      {{3, 1e-9, 1e-9}, normalized({-1, 0.3, 0.4}), {-1, 0, 0}, {2, 0, 0}},
       // P within 1e-9 m and 1e-12 m of the tube, tilted normal.
       {{0.3, 0, -1e-9}, {0, 0.6, 0.8}, {0, 0, 0}, {1, 0, 0}},
       {{0.3, 0, -1e-12}, {0, 0.6, 0.8}, {0, 0, 0}, {1, 0, 0}},
@@ -315,7 +304,7 @@ BOOST_AUTO_TEST_CASE(near_degenerate_configurations_agree_with_quadrature) {
       // A 1 micrometre tube 5 m away.
       {{0, 0, 0}, n, {3, 4, 0.1}, {3 + 1e-6, 4, 0.1 + 0.5e-6}},
       // P 1e-7 m from the end A, beside the tube.
-      {{1e-7, 0, 0}, unit({1, 0, 0.1}), {0, 0, 0}, {0, 0, 2}},
+      {{1e-7, 0, 0}, normalized({1, 0, 0.1}), {0, 0, 0}, {0, 0, 2}},
       // Foot exactly at the regime switch t0 t1 = h^2 (t0 = 1, t1 = 4, h = 2).
       {{0, 0, 0}, n, {1, 2, 0}, {4, 2, 0}},
       // Tube crossing the plane very close to one end.
@@ -357,11 +346,11 @@ BOOST_AUTO_TEST_CASE(closed_form_matches_a_fifty_digit_angle_form) {
     return static_cast<double>((primitive(t_a + tube) - primitive(t_a)) / (2 * h));
   };
   const std::vector<Configuration> cases{
-      {{-1, 0, -1e-3}, {0, 0.6, 0.8}, {0, 0, 0}, {1, 0, 0}},       // beyond the end, h = 1e-3
-      {{-1, 0, -1e-9}, {0, 0.6, 0.8}, {0, 0, 0}, {1, 0, 0}},       // beyond the end, h = 1e-9
-      {{0.3, 0, -1e-11}, {0, 0.6, 0.8}, {0, 0, 0}, {1, 0, 0}},     // beside the tube
-      {{0, 0, 0}, {0, 0, 1}, {3, 4, 1}, {3 + 1e-8, 4, 1 + 1e-8}},  // a 14 nm tube 5 m away
-      {{0, 0, 0}, unit({0.2, 0.1, 1}), {-2, 1, 1}, {4, 1.5, 3}},   // ordinary oblique
+      {{-1, 0, -1e-3}, {0, 0.6, 0.8}, {0, 0, 0}, {1, 0, 0}},            // beyond the end, h = 1e-3
+      {{-1, 0, -1e-9}, {0, 0.6, 0.8}, {0, 0, 0}, {1, 0, 0}},            // beyond the end, h = 1e-9
+      {{0.3, 0, -1e-11}, {0, 0.6, 0.8}, {0, 0, 0}, {1, 0, 0}},          // beside the tube
+      {{0, 0, 0}, {0, 0, 1}, {3, 4, 1}, {3 + 1e-8, 4, 1 + 1e-8}},       // a 14 nm tube 5 m away
+      {{0, 0, 0}, normalized({0.2, 0.1, 1}), {-2, 1, 1}, {4, 1.5, 3}},  // ordinary oblique
   };
   for (const Configuration& c : cases) {
     const double expected = fifty_digits(c.p, c.n, c.a, c.b);
@@ -379,7 +368,7 @@ BOOST_AUTO_TEST_CASE(flux_into_a_closed_box_equals_pi_squared_i_l) {
   const double flux = penumbra::test::flux_into_box(
       [&](const Vec3d& p, const Vec3d& n) { return linear_illuminance(p, n, a, b, intensity); },
       {0, 0, 0}, {3, 2, 2.5}, 8, 8);
-  BOOST_TEST(relative_difference(flux, pi * pi * intensity * length(sub(b, a))) <= 1e-12);
+  BOOST_TEST(relative_difference(flux, pi * pi * intensity * length(b - a)) <= 1e-12);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

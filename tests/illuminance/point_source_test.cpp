@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/illuminance/point_source.h"
 #include "reference_quadrature.h"
 
@@ -12,7 +13,7 @@ using penumbra::Vec3d;
 using penumbra::illuminance::directional_illuminance;
 using penumbra::illuminance::point_illuminance;
 
-const double pi = std::acos(-1.0);
+using penumbra::pi;
 
 bool close(double value, double expected, double relative) {
   return std::abs(value - expected) <= relative * std::abs(expected);

@@ -8,13 +8,14 @@
 #include <functional>
 #include <utility>
 #include <vector>
+#include "penumbra/base/numbers.h"
 
 namespace penumbra::test {
 
 // returns the n Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n, Golub-Welsch
 // free; accurate to a few ulps for the n used here).
 inline std::vector<std::pair<double, double>> gauss_legendre(int n) {
-  const double pi = std::acos(-1.0);
+  using penumbra::pi;
   std::vector<std::pair<double, double>> rule;
   for (int i = 0; i < n; ++i) {
     double x = std::cos(pi * (i + 0.75) / (n + 0.5));

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/illuminance/specular.h"
 
 // Phong's specular term (a luminance, cd/m^2) for point sources and, as Nishita 1985 section
@@ -16,7 +17,7 @@ using penumbra::illuminance::linear_specular;
 using penumbra::illuminance::PhongSpecular;
 using penumbra::illuminance::point_specular;
 
-const double pi = std::acos(-1.0);
+using penumbra::pi;
 
 double dot(const Vec3d& p, const Vec3d& q) {
   return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];

@@ -5,6 +5,7 @@
 
 #include "penumbra/illuminance/isolux.h"
 #include "penumbra/illuminance/workplane.h"
+#include "penumbra/io/isolux_svg.h"
 #include "penumbra/scene/load_scene.h"
 #include "support/fixtures.h"
 
@@ -98,7 +99,7 @@ BOOST_AUTO_TEST_CASE(isolux_lines_of_a_radial_field_are_circles) {
   }
   // The SVG carries one polyline per line, the legend and the levels as labels.
   std::ostringstream svg;
-  write_isolux_svg(svg, scene, values, levels);
+  io::write_isolux_svg(svg, scene, values, levels);
   const std::string text = svg.str();
   std::size_t polylines = 0;
   for (std::size_t at = text.find("<polyline"); at != std::string::npos;

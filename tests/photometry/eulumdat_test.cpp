@@ -8,23 +8,23 @@
 #include <filesystem>
 #include <sstream>
 
-#include "penumbra/input_error.h"
-#include "penumbra/photometry/eulumdat.h"
 #include "midpoint_flux.h"
+#include "penumbra/base/input_error.h"
+#include "penumbra/photometry/eulumdat.h"
 #include "printing.h"
 #include "support/fixtures.h"
 
 namespace tt = boost::test_tools;
 using namespace penumbra::photometry;
 using penumbra::InputError;
-using penumbra::test::shared_photometry;
+using penumbra::test::photometry_fixture;
 
 namespace {
 
 using test::midpoint_flux;
 
 TableDistribution load(const std::string& name, std::size_t lamp_set = 0) {
-  return TableDistribution(candela_grid(read_eulumdat(shared_photometry(name)), lamp_set),
+  return TableDistribution(candela_grid(read_eulumdat(photometry_fixture(name)), lamp_set),
                            Interpolation::linear);
 }
 
@@ -34,7 +34,7 @@ BOOST_AUTO_TEST_SUITE(eulumdat)
 
 BOOST_AUTO_TEST_CASE(every_shared_ldt_file_loads_and_integrates_like_an_independent_quadrature) {
   for (const std::string folder : {"ldt-formats", "ldt-real"})
-    for (const auto& entry : std::filesystem::directory_iterator(shared_photometry(folder))) {
+    for (const auto& entry : std::filesystem::directory_iterator(photometry_fixture(folder))) {
       BOOST_TEST_CONTEXT(entry.path().filename()) {
         const auto lid = load_eulumdat(entry.path(), Interpolation::linear);
         BOOST_TEST(lid->flux() == midpoint_flux(*lid), tt::tolerance(3e-3));
@@ -56,7 +56,7 @@ BOOST_AUTO_TEST_CASE(real_luminaires_emit_their_light_output_ratio_times_lamp_fl
       {"ldt-real/projector.ldt", 0.025}};
   for (const auto& [name, tolerance] : files) {
     BOOST_TEST_CONTEXT(name) {
-      const EulumdatFile ldt = read_eulumdat(shared_photometry(name));
+      const EulumdatFile ldt = read_eulumdat(photometry_fixture(name));
       const double stated = ldt.light_output_ratio / 100 * ldt.lamp_sets[0].flux;
       const TableDistribution lid(candela_grid(ldt), Interpolation::linear);
       BOOST_TEST(lid.flux() == stated, tt::tolerance(tolerance));
@@ -76,17 +76,17 @@ BOOST_AUTO_TEST_CASE(wiki_templates_load_but_their_numbers_are_not_a_luminaire) 
 
 BOOST_AUTO_TEST_CASE(cd_per_klm_becomes_candela_with_the_lamp_flux) {
   // absolute.ldt: 2200 cd/klm at nadir, lamp set flux 500 lm: 2200 x 500 / 1000 = 1100 cd.
-  const EulumdatFile absolute = read_eulumdat(shared_photometry("ldt-formats/absolute.ldt"));
+  const EulumdatFile absolute = read_eulumdat(photometry_fixture("ldt-formats/absolute.ldt"));
   BOOST_TEST(absolute.absolute());
   BOOST_TEST(absolute.lamp_sets[0].count == -2);
   BOOST_TEST(load("ldt-formats/absolute.ldt").intensity(0, 0) == 1100.0, tt::tolerance(1e-12));
-  const EulumdatFile relative = read_eulumdat(shared_photometry("ldt-formats/relative.ldt"));
+  const EulumdatFile relative = read_eulumdat(photometry_fixture("ldt-formats/relative.ldt"));
   BOOST_TEST(!relative.absolute());
   BOOST_TEST(load("ldt-formats/relative.ldt").intensity(0, 0) == 1100.0, tt::tolerance(1e-12));
 }
 
 BOOST_AUTO_TEST_CASE(several_lamp_sets_are_read_and_selectable) {
-  const EulumdatFile ldt = read_eulumdat(shared_photometry("ldt-formats/multiple_lamp_sets.ldt"));
+  const EulumdatFile ldt = read_eulumdat(photometry_fixture("ldt-formats/multiple_lamp_sets.ldt"));
   BOOST_TEST_REQUIRE(ldt.lamp_sets.size() == 3u);
   BOOST_TEST(ldt.lamp_sets[1].type == "Double Lamp");
   BOOST_TEST(ldt.lamp_sets[1].count == 2);
@@ -98,7 +98,7 @@ BOOST_AUTO_TEST_CASE(several_lamp_sets_are_read_and_selectable) {
   BOOST_TEST(load("ldt-formats/multiple_lamp_sets.ldt", 1).intensity(0, 0) == 2640.0,
              tt::tolerance(1e-12));
   BOOST_CHECK_THROW(candela_grid(ldt, 3), InputError);
-  const EulumdatFile two = read_eulumdat(shared_photometry("ldt-real/demo_two_lamp_sets.ldt"));
+  const EulumdatFile two = read_eulumdat(photometry_fixture("ldt-real/demo_two_lamp_sets.ldt"));
   BOOST_TEST(two.lamp_sets[1].flux == 10080.0);
 }
 
@@ -168,7 +168,7 @@ BOOST_AUTO_TEST_CASE(isym_0_and_1_keep_every_plane_and_one_plane) {
 
 BOOST_AUTO_TEST_CASE(bad_files_name_the_line) {
   const std::string text =
-      penumbra::test::read_text(shared_photometry("ldt-formats/symmetry_to_c0c180.ldt"));
+      penumbra::test::read_text(photometry_fixture("ldt-formats/symmetry_to_c0c180.ldt"));
   auto message = [](const std::string& changed) {
     try {
       parse_eulumdat(changed, "bad.ldt");

@@ -9,16 +9,19 @@
 #include <fstream>
 #include <sstream>
 
-#include "penumbra/input_error.h"
-#include "penumbra/photometry/ies.h"
 #include "midpoint_flux.h"
+#include "penumbra/base/input_error.h"
+#include "penumbra/base/numbers.h"
+#include "penumbra/photometry/ies.h"
 #include "printing.h"
 #include "support/fixtures.h"
+
+using penumbra::pi;
 
 namespace tt = boost::test_tools;
 using namespace penumbra::photometry;
 using penumbra::InputError;
-using penumbra::test::shared_photometry;
+using penumbra::test::photometry_fixture;
 
 namespace {
 
@@ -26,7 +29,7 @@ using test::midpoint_flux;
 
 std::vector<std::filesystem::path> files_in(const std::string& folder) {
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(shared_photometry(folder)))
+  for (const auto& entry : std::filesystem::directory_iterator(photometry_fixture(folder)))
     files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
@@ -84,7 +87,7 @@ BOOST_AUTO_TEST_CASE(real_files_integrate_to_the_lumens_their_labs_state) {
                                                    {"maxwell-8-t4-iesna.ies", 1000}};
   for (const auto& [name, lumens] : stated) {
     BOOST_TEST_CONTEXT(name) {
-      const IesFile ies = read_ies(shared_photometry(std::string("ies-real/") + name));
+      const IesFile ies = read_ies(photometry_fixture(std::string("ies-real/") + name));
       if (ies.keyword("_ABSOLUTELUMENS").empty() == false)
         BOOST_TEST(std::stod(ies.keyword("_ABSOLUTELUMENS")) == lumens);
       const TableDistribution lid(candela_grid(ies), Interpolation::linear);
@@ -94,20 +97,20 @@ BOOST_AUTO_TEST_CASE(real_files_integrate_to_the_lumens_their_labs_state) {
 }
 
 BOOST_AUTO_TEST_CASE(type_b_files_convert_to_c_gamma_with_the_beam_on_the_axis) {
-  const IesFile ies = read_ies(shared_photometry("ies-real/flood-2.2.ies"));
+  const IesFile ies = read_ies(photometry_fixture("ies-real/flood-2.2.ies"));
   BOOST_TEST(ies.photometric_type == 2);
   const TableDistribution lid(candela_grid(ies), Interpolation::linear);
   // H = 0, V = 0 is the 23rd value of the 23rd block (both lists are -90..90 with 0 at
   // index 22): the beam axis.
   BOOST_TEST(lid.intensity(0, 0) == ies.candela[22][22], tt::tolerance(1e-12));
   // H = -90 (C = 270, gamma = 90) is the pole, 1.79 cd for every V in the file.
-  BOOST_TEST(lid.intensity(kPi / 2, 1.5 * kPi) == 1.79, tt::tolerance(1e-9));
+  BOOST_TEST(lid.intensity(pi / 2, 1.5 * pi) == 1.79, tt::tolerance(1e-9));
 }
 
 BOOST_AUTO_TEST_CASE(the_multiplier_scales_candela_once_not_squared) {
-  const IesFile plain = read_ies(shared_photometry("ies-formats/ies95-relative_photometry.ies"));
+  const IesFile plain = read_ies(photometry_fixture("ies-formats/ies95-relative_photometry.ies"));
   const IesFile scaled =
-      read_ies(shared_photometry("ies-formats/ies95-relative_photometry_with_multiplier.ies"));
+      read_ies(photometry_fixture("ies-formats/ies95-relative_photometry_with_multiplier.ies"));
   BOOST_TEST(scaled.candela_multiplier == 1.5);
   const auto a = candela_grid(plain), b = candela_grid(scaled);
   for (std::size_t v = 0; v < a.vertical_deg.size(); ++v)
@@ -116,10 +119,10 @@ BOOST_AUTO_TEST_CASE(the_multiplier_scales_candela_once_not_squared) {
 }
 
 BOOST_AUTO_TEST_CASE(minus_one_lumens_is_absolute_photometry) {
-  const IesFile ies = read_ies(shared_photometry("ies-formats/ies95-absolute_photometry.ies"));
+  const IesFile ies = read_ies(photometry_fixture("ies-formats/ies95-absolute_photometry.ies"));
   BOOST_TEST(ies.absolute());
   BOOST_TEST(candela_grid(ies).candela[0][0] == 2200.0);
-  BOOST_TEST(!read_ies(shared_photometry("ies-formats/ies95-relative_photometry.ies")).absolute());
+  BOOST_TEST(!read_ies(photometry_fixture("ies-formats/ies95-relative_photometry.ies")).absolute());
   BOOST_TEST(
       error_location(
           std::string(
@@ -128,11 +131,11 @@ BOOST_AUTO_TEST_CASE(minus_one_lumens_is_absolute_photometry) {
 }
 
 BOOST_AUTO_TEST_CASE(negative_opening_dimensions_are_kept) {
-  const IesFile round = read_ies(shared_photometry("ies-formats/ies95-round_opening.ies"));
+  const IesFile round = read_ies(photometry_fixture("ies-formats/ies95-round_opening.ies"));
   BOOST_TEST(round.width == -0.12);
-  const IesFile sphere = read_ies(shared_photometry("ies-formats/ies95-sphere_opening.ies"));
+  const IesFile sphere = read_ies(photometry_fixture("ies-formats/ies95-sphere_opening.ies"));
   BOOST_TEST(sphere.height == -0.12);
-  BOOST_TEST(read_ies(shared_photometry("ies-formats/ies95-imperial_units.ies")).units_type == 1);
+  BOOST_TEST(read_ies(photometry_fixture("ies-formats/ies95-imperial_units.ies")).units_type == 1);
 }
 
 BOOST_AUTO_TEST_CASE(label_lines_mentioning_tilt_do_not_end_the_header) {
@@ -144,7 +147,7 @@ BOOST_AUTO_TEST_CASE(label_lines_mentioning_tilt_do_not_end_the_header) {
   BOOST_TEST(ies.label_lines.size() == 3u);
   BOOST_TEST(ies.keyword("TEST") == "TILT=NONE was not measured");
   BOOST_TEST(ies.candela[0][1] == 50.0);
-  const IesFile shipped = read_ies(shared_photometry("ies-formats/ies95-label_lines.ies"));
+  const IesFile shipped = read_ies(photometry_fixture("ies-formats/ies95-label_lines.ies"));
   BOOST_TEST(shipped.keyword("MULTILINE") == "Test multiline metadata");
 }
 

@@ -11,8 +11,8 @@
 #include "support/fixtures.h"
 
 namespace tt = boost::test_tools;
+using penumbra::test::photometry_fixture;
 using penumbra::test::run_penumbra;
-using penumbra::test::shared_photometry;
 
 namespace {
 
@@ -26,7 +26,7 @@ BOOST_AUTO_TEST_SUITE(lid_cli)
 
 BOOST_AUTO_TEST_CASE(info_json_has_the_documented_keys) {
   const auto result =
-      run_penumbra("lid info --json " + quoted(shared_photometry("ies-real/7.IES")));
+      run_penumbra("lid info --json " + quoted(photometry_fixture("ies-real/7.IES")));
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
   const auto out = nlohmann::json::parse(result.out);
   for (const char* key :
@@ -56,9 +56,9 @@ BOOST_AUTO_TEST_CASE(sample_prints_the_intensity) {
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
   BOOST_TEST(std::stod(result.out) == 75.0, tt::tolerance(1e-12));
   // C = 360 on a full C-gamma file is C = 0.
-  const auto at0 = run_penumbra("lid sample " + quoted(shared_photometry("ies-real/3.IES")) +
+  const auto at0 = run_penumbra("lid sample " + quoted(photometry_fixture("ies-real/3.IES")) +
                                 " --gamma 30 --c 0");
-  const auto at360 = run_penumbra("lid sample " + quoted(shared_photometry("ies-real/3.IES")) +
+  const auto at360 = run_penumbra("lid sample " + quoted(photometry_fixture("ies-real/3.IES")) +
                                   " --gamma 30 --c 360");
   BOOST_TEST(std::stod(at0.out) == 3954.03 * 1.0043784, tt::tolerance(1e-12));
   BOOST_TEST(std::stod(at360.out) == std::stod(at0.out), tt::tolerance(1e-12));
@@ -66,7 +66,7 @@ BOOST_AUTO_TEST_CASE(sample_prints_the_intensity) {
 
 BOOST_AUTO_TEST_CASE(convert_round_trips_an_ies_file_and_converts_ldt) {
   const auto dir = penumbra::test::scratch_dir("lid-convert");
-  const auto source = shared_photometry("ies-real/italo-1-5p5-s05.ies");
+  const auto source = photometry_fixture("ies-real/italo-1-5p5-s05.ies");
   const auto result =
       run_penumbra("lid convert " + quoted(source) + " -o " + quoted(dir / "out.ies"));
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
@@ -76,7 +76,7 @@ BOOST_AUTO_TEST_CASE(convert_round_trips_an_ies_file_and_converts_ldt) {
   BOOST_TEST(again.vertical_deg == original.vertical_deg);
   BOOST_TEST(again.label_lines == original.label_lines);
   // EULUMDAT to LM-63: the same intensities in candela, and the same flux.
-  const auto ldt = shared_photometry("ldt-real/road_luminaire.ldt");
+  const auto ldt = photometry_fixture("ldt-real/road_luminaire.ldt");
   BOOST_TEST_REQUIRE(
       run_penumbra("lid convert " + quoted(ldt) + " -o " + quoted(dir / "road.ies")).status == 0);
   const auto a = run_penumbra("lid sample " + quoted(ldt) + " --gamma 65 --c 170");

@@ -5,12 +5,13 @@
 
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/photometry/distribution.h"
 
 namespace penumbra::photometry::test {
 
 inline double midpoint_flux(const Distribution& lid) {
-  const double pi = std::acos(-1.0);
+  using penumbra::pi;
   constexpr int nu = 1440, nc = 720;
   double total = 0;
   for (int i = 0; i < nu; ++i) {

@@ -5,8 +5,11 @@
 
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/photometry/table_distribution.h"
 #include "printing.h"
+
+using penumbra::pi;
 
 namespace tt = boost::test_tools;
 using namespace penumbra::photometry;
@@ -18,9 +21,9 @@ double midpoint_flux(const Distribution& lid, int nu = 2000, int nc = 360) {
   double total = 0;
   for (int i = 0; i < nu; ++i) {
     const double gamma = std::acos(1 - (i + 0.5) * 2.0 / nu);
-    for (int j = 0; j < nc; ++j) total += lid.intensity(gamma, (j + 0.5) * 2 * kPi / nc);
+    for (int j = 0; j < nc; ++j) total += lid.intensity(gamma, (j + 0.5) * 2 * pi / nc);
   }
-  return total * (2.0 / nu) * (2 * kPi / nc);
+  return total * (2.0 / nu) * (2 * pi / nc);
 }
 
 PhotometricGrid c_grid(std::vector<double> h, std::vector<double> v,
@@ -73,18 +76,18 @@ BOOST_AUTO_TEST_CASE(cosine_interpolation_error_is_largest_near_the_axis) {
 
 BOOST_AUTO_TEST_CASE(flux_of_a_constant_table_is_four_pi_i) {
   const auto lid = make_axial_table({0, 180}, {100, 100}, Interpolation::linear);
-  BOOST_TEST(lid->flux() == 4 * kPi * 100, tt::tolerance(1e-12));
-  BOOST_TEST(lid->intensity(kPi, 1.0) == 100.0);  // pi itself, not radians(180), hits the end
+  BOOST_TEST(lid->flux() == 4 * pi * 100, tt::tolerance(1e-12));
+  BOOST_TEST(lid->intensity(pi, 1.0) == 100.0);  // pi itself, not radians(180), hits the end
 }
 
 BOOST_AUTO_TEST_CASE(flux_of_a_ramp_matches_the_hand_integral) {
   // I = 100 (1 - 2 g / pi) on 0..90, 0 beyond: 2 pi 100 int (1 - 2g/pi) sin g dg
   //   = 2 pi 100 (1 - 2/pi), since int_0^pi/2 g sin g dg = 1.
   const auto lid = make_axial_table({0, 90, 180}, {100, 0, 0}, Interpolation::linear);
-  BOOST_TEST(lid->flux() == 2 * kPi * 100 * (1 - 2 / kPi), tt::tolerance(1e-12));
+  BOOST_TEST(lid->flux() == 2 * pi * 100 * (1 - 2 / pi), tt::tolerance(1e-12));
   // The cosine interpolant is linear in u = cos g: 2 pi 100 int_0^1 u du = 100 pi.
   const auto cosine = make_axial_table({0, 90, 180}, {100, 0, 0}, Interpolation::cosine);
-  BOOST_TEST(cosine->flux() == 100 * kPi, tt::tolerance(1e-12));
+  BOOST_TEST(cosine->flux() == 100 * pi, tt::tolerance(1e-12));
 }
 
 BOOST_AUTO_TEST_CASE(flux_of_the_paper_curve_matches_an_independent_quadrature) {
@@ -133,7 +136,7 @@ BOOST_AUTO_TEST_CASE(azimuth_360_is_azimuth_0_not_zero) {
   TableDistribution full(c_grid({0, 120, 240, 360}, {0, 180}, {{5, 5}, {6, 6}, {7, 7}, {5, 5}}),
                          Interpolation::linear);
   BOOST_TEST(full.intensity(1.0, radians(360)) == 5.0, tt::tolerance(1e-12));
-  BOOST_TEST(full.intensity(1.0, 2 * kPi) == 5.0, tt::tolerance(1e-12));
+  BOOST_TEST(full.intensity(1.0, 2 * pi) == 5.0, tt::tolerance(1e-12));
   // Without the closing plane the circle closes on C = 0: at 300, halfway 240..360.
   TableDistribution open(c_grid({0, 120, 240}, {0, 180}, {{5, 5}, {6, 6}, {7, 7}}),
                          Interpolation::linear);
@@ -160,10 +163,10 @@ BOOST_AUTO_TEST_CASE(type_b_maps_the_beam_axis_to_gamma_0) {
   grid.candela = {{7, 7, 7}, {1, 100, 3}, {9, 9, 9}};
   TableDistribution lid(grid, Interpolation::linear);
   BOOST_TEST(lid.intensity(0, 0) == 100.0, tt::tolerance(1e-12));
-  BOOST_TEST(lid.intensity(kPi / 2, 0) == 3.0, tt::tolerance(1e-12));        // V = +90
-  BOOST_TEST(lid.intensity(kPi / 2, kPi) == 1.0, tt::tolerance(1e-12));      // V = -90
-  BOOST_TEST(lid.intensity(kPi / 2, kPi / 2) == 9.0, tt::tolerance(1e-12));  // H = +90
-  BOOST_TEST(lid.intensity(kPi / 2, 1.5 * kPi) == 7.0, tt::tolerance(1e-12));
+  BOOST_TEST(lid.intensity(pi / 2, 0) == 3.0, tt::tolerance(1e-12));       // V = +90
+  BOOST_TEST(lid.intensity(pi / 2, pi) == 1.0, tt::tolerance(1e-12));      // V = -90
+  BOOST_TEST(lid.intensity(pi / 2, pi / 2) == 9.0, tt::tolerance(1e-12));  // H = +90
+  BOOST_TEST(lid.intensity(pi / 2, 1.5 * pi) == 7.0, tt::tolerance(1e-12));
   // The back hemisphere is outside -90..90 of V: dark.
   BOOST_TEST(lid.intensity(2.5, 0.3) == 0.0);
   // Flux: the exact integral in (H, V) with dOmega = cos H dH dV against the quadrature.
@@ -179,8 +182,8 @@ BOOST_AUTO_TEST_CASE(type_a_maps_the_beam_axis_to_gamma_0) {
   TableDistribution lid(grid, Interpolation::linear);
   BOOST_TEST(lid.symmetry() == Symmetry::bilateral_c0_c180);
   BOOST_TEST(lid.intensity(0, 0) == 100.0, tt::tolerance(1e-12));
-  BOOST_TEST(lid.intensity(kPi / 4, kPi / 2) == 50.0, tt::tolerance(1e-12));    // H = 45
-  BOOST_TEST(lid.intensity(kPi / 4, 1.5 * kPi) == 50.0, tt::tolerance(1e-12));  // H = -45
+  BOOST_TEST(lid.intensity(pi / 4, pi / 2) == 50.0, tt::tolerance(1e-12));    // H = 45
+  BOOST_TEST(lid.intensity(pi / 4, 1.5 * pi) == 50.0, tt::tolerance(1e-12));  // H = -45
   BOOST_TEST(lid.flux() == midpoint_flux(lid, 2000, 720), tt::tolerance(2e-4));
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/raytrace/anti_aliasing.h"
 
 // Whitted section 3 on images whose area means are known in closed form.
@@ -9,8 +10,9 @@
 namespace {
 
 using namespace penumbra::raytrace;
+using penumbra::Colour;
 
-Radiance grey(double value) {
+Colour grey(double value) {
   return {value, value, value};
 }
 
@@ -61,7 +63,7 @@ BOOST_AUTO_TEST_CASE(a_small_object_between_the_corners_is_found_only_when_force
   const Corners corners = corners_of(disc, 0, 0, 1);
   BOOST_TEST(adaptive_mean(disc, 0, 0, 1, corners, options).mean[0] == 0.0);
   const double area = adaptive_mean(disc, 0, 0, 1, corners, options, 0, 0.05).mean[0];
-  const double pi = std::acos(-1.0);
+  using penumbra::pi;
   BOOST_TEST(std::abs(area - pi * 0.0025) < 0.1 * pi * 0.0025);
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/raytrace/ray_tracer.h"
 #include "penumbra/scene/scene.h"
 #include "scene_support.h"
@@ -18,7 +19,7 @@ namespace {
 using penumbra::Vec3d;
 using namespace penumbra::raytrace;
 
-const double pi = std::acos(-1.0);
+using penumbra::pi;
 const double radius = 2, candela = 50, rho = 0.3, k_s = 0.6;
 
 penumbra::Scene furnace_scene() {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/raytrace/optics.h"
 
 namespace {
@@ -19,7 +20,7 @@ Vec3d cross(const Vec3d& a, const Vec3d& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-const double pi = std::acos(-1.0);
+using penumbra::pi;
 
 // An incident unit direction at angle theta from the normal (0, 0, 1), travelling down,
 // in the plane spanned by the normal and the tangent (cos(phi), sin(phi), 0).

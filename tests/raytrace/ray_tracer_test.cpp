@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/illuminance/point_source.h"
 #include "penumbra/raytrace/ray_tracer.h"
 #include "penumbra/scene/scene.h"
@@ -14,7 +15,7 @@ using namespace penumbra::raytrace;
 using penumbra::test::scene_from_json;
 
 namespace tt = boost::test_tools;
-const double pi = std::acos(-1.0);
+using penumbra::pi;
 
 Vec3d minus(const Vec3d& a, const Vec3d& b) {
   return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};

@@ -2,11 +2,12 @@
 
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/illuminance/linear_source.h"
 #include "penumbra/illuminance/scene_illuminance.h"
-#include "penumbra/raytrace/pinhole_camera.h"
 #include "penumbra/raytrace/ray_tracer.h"
 #include "penumbra/raytrace/tube_visibility.h"
+#include "penumbra/scene/camera_frame.h"
 #include "penumbra/scene/scene.h"
 #include "scene_support.h"
 
@@ -18,12 +19,13 @@
 
 namespace {
 
+using penumbra::CameraFrame;
 using penumbra::Vec3d;
 using namespace penumbra::raytrace;
 using penumbra::test::scene_from_json;
 namespace tt = boost::test_tools;
 
-const double pi = std::acos(-1.0);
+using penumbra::pi;
 const Vec3d tube_start{-1, 0, 2}, tube_end{1, 0, 2}, up{0, 0, 1};
 
 const std::string tube_and_floor = R"(
@@ -58,11 +60,11 @@ BOOST_AUTO_TEST_CASE(an_opaque_box_gives_the_exact_engines_penumbra_at_every_pix
                "width": 48, "height": 36}})");
   const RayTracer tracer(scene);
   const penumbra::illuminance::IlluminanceSolver solver(scene);
-  const PinholeCamera camera(*scene.camera);
+  const CameraFrame camera(*scene.camera);
   int lit = 0, penumbra = 0, umbra = 0;
   for (int j = 0; j < camera.height(); ++j)
     for (int i = 0; i < camera.width(); ++i) {
-      const Vec3d direction = camera.direction(i + 0.5, j + 0.5);
+      const Vec3d direction = camera.unit_direction(i + 0.5, j + 0.5);
       const auto hit = tracer.embree_scene().intersect({camera.eye(), direction});
       if (!hit || hit->object != 0) continue;
       // The exact engine at the floor point (z = 0 exactly: the hit point is rounded and

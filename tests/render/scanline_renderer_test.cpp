@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/illuminance/scene_illuminance.h"
 #include "penumbra/render/scanline_renderer.h"
 #include "penumbra/scene/load_scene.h"
-#include "vector_names.h"
 #include "support/fixtures.h"
+
+using penumbra::pi;
 
 namespace {
 
@@ -20,12 +22,7 @@ using penumbra::Vec3d;
 using penumbra::test::fixture;
 using namespace penumbra::render;
 
-using penumbra::test::add;
-using penumbra::test::cross;
-using penumbra::test::dot;
-using penumbra::test::scale;
-using penumbra::test::sub;
-using penumbra::test::unit;
+using namespace penumbra::vector_ops;
 
 Scene resized(const char* name, int width, int height) {
   Scene scene = penumbra::load_scene(fixture(name));
@@ -70,10 +67,10 @@ BOOST_AUTO_TEST_CASE(interval_one_equals_the_solver_at_the_visible_point) {
     const RenderedImage image = renderer.render(options);
     const penumbra::illuminance::IlluminanceSolver solver(scene);
     const penumbra::Camera& camera = *scene.camera;
-    const Vec3d forward = unit(sub(camera.target, camera.eye));
-    const Vec3d right = unit(cross(forward, camera.up));
+    const Vec3d forward = normalized(camera.target - camera.eye);
+    const Vec3d right = normalized(cross(forward, camera.up));
     const Vec3d up = cross(right, forward);
-    const double half_height = std::tan(camera.fov_deg * M_PI / 360);
+    const double half_height = std::tan(camera.fov_deg * pi / 360);
     const double half_width = half_height * camera.width / camera.height;
     std::size_t checked = 0, lit = 0, wrong = 0;
     for (int j = 0; j < image.height; ++j)
@@ -86,15 +83,15 @@ BOOST_AUTO_TEST_CASE(interval_one_equals_the_solver_at_the_visible_point) {
         }
         const auto& face = scene.objects[object].solid.faces()[image.visibility.faces[pixel]];
         const Vec3d a = penumbra::to_double(face.vertices[0]);
-        const Vec3d normal = unit(cross(sub(penumbra::to_double(face.vertices[1]), a),
-                                        sub(penumbra::to_double(face.vertices[2]), a)));
+        const Vec3d normal = normalized(cross(penumbra::to_double(face.vertices[1]) - a,
+                                              penumbra::to_double(face.vertices[2]) - a));
         const Vec3d direction =
-            add(forward, add(scale((2 * (i + 0.5) / camera.width - 1) * half_width, right),
-                             scale((1 - 2 * (j + 0.5) / camera.height) * half_height, up)));
-        const double t = dot(normal, sub(a, camera.eye)) / dot(normal, direction);
-        Vec3d p = add(camera.eye, scale(t, direction));
+            forward + (((2 * (i + 0.5) / camera.width - 1) * half_width) * right +
+                       ((1 - 2 * (j + 0.5) / camera.height) * half_height) * up);
+        const double t = dot(normal, a - camera.eye) / dot(normal, direction);
+        Vec3d p = camera.eye + t * direction;
         const double magnitude = std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
-        p = add(p, scale(surface_lift * (1 + magnitude), normal));
+        p = p + (surface_lift * (1 + magnitude)) * normal;
         const double expected = solver.at(p, normal).total;
         ++checked;
         if (expected > 0) ++lit;
@@ -175,7 +172,7 @@ BOOST_AUTO_TEST_CASE(luminance_is_reflectance_times_illuminance_over_pi) {
     const long object = image.visibility.objects[pixel];
     if (object < 0) continue;
     const penumbra::Material& material = scene.materials[scene.objects[object].material];
-    BOOST_TEST(image.luminance[pixel] == material.reflectance * image.illuminance[pixel] / M_PI,
+    BOOST_TEST(image.luminance[pixel] == material.reflectance * image.illuminance[pixel] / pi,
                boost::test_tools::tolerance(1e-12));
     BOOST_TEST(image.radiance[pixel][0] == image.luminance[pixel] * material.color[0],
                boost::test_tools::tolerance(1e-12));

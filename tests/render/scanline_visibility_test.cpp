@@ -9,10 +9,12 @@
 #include <cmath>
 #include <optional>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/render/scanline_visibility.h"
 #include "penumbra/scene/load_scene.h"
-#include "vector_names.h"
 #include "support/fixtures.h"
+
+using penumbra::pi;
 
 namespace {
 
@@ -20,12 +22,7 @@ using penumbra::Scene;
 using penumbra::Vec3d;
 using penumbra::test::fixture;
 
-using penumbra::test::add;
-using penumbra::test::cross;
-using penumbra::test::dot;
-using penumbra::test::scale;
-using penumbra::test::sub;
-using penumbra::test::unit;
+using namespace penumbra::vector_ops;
 
 struct Hit {
   long object = -1;
@@ -45,17 +42,17 @@ Hit cast(const Scene& scene, const Vec3d& eye, const Vec3d& direction) {
       std::vector<Vec3d> vertices;
       for (const auto& vertex : faces[face].vertices)
         vertices.push_back(penumbra::to_double(vertex));
-      Vec3d normal = unit(cross(sub(vertices[1], vertices[0]), sub(vertices[2], vertices[0])));
+      Vec3d normal = normalized(cross(vertices[1] - vertices[0], vertices[2] - vertices[0]));
       const double denominator = dot(normal, direction);
       if (!(denominator < 0)) continue;  // back face or edge-on
-      const double t = dot(normal, sub(vertices[0], eye)) / denominator;
+      const double t = dot(normal, vertices[0] - eye) / denominator;
       if (!(t > 0)) continue;
-      const Vec3d p = add(eye, scale(t, direction));
+      const Vec3d p = eye + t * direction;
       // inside the convex face: left of every edge (counter-clockwise seen from outside)
       double margin = INFINITY;
       for (std::size_t k = 0; k < vertices.size(); ++k) {
-        const Vec3d edge = sub(vertices[(k + 1) % vertices.size()], vertices[k]);
-        margin = std::min(margin, dot(cross(unit(edge), sub(p, vertices[k])), normal));
+        const Vec3d edge = vertices[(k + 1) % vertices.size()] - vertices[k];
+        margin = std::min(margin, dot(cross(normalized(edge), p - vertices[k]), normal));
       }
       if (margin < -1e-9) continue;
       const bool edge_hit = margin < 1e-9;
@@ -83,17 +80,17 @@ void compare_with_ray_cast(const Scene& scene, int width, int height, std::size_
   camera.height = height;
   const auto map = penumbra::render::scanline_visibility(scene, camera);
   // the camera of DESIGN.md, derived here again
-  const Vec3d forward = unit(sub(camera.target, camera.eye));
-  const Vec3d right = unit(cross(forward, camera.up));
+  const Vec3d forward = normalized(camera.target - camera.eye);
+  const Vec3d right = normalized(cross(forward, camera.up));
   const Vec3d up = cross(right, forward);
-  const double half_height = std::tan(camera.fov_deg * M_PI / 360);
+  const double half_height = std::tan(camera.fov_deg * pi / 360);
   const double half_width = half_height * width / height;
   std::size_t mismatches = 0, ambiguous = 0;
   for (int j = 0; j < height; ++j)
     for (int i = 0; i < width; ++i) {
       const double across = (2 * (i + 0.5) / width - 1) * half_width;
       const double down = (1 - 2 * (j + 0.5) / height) * half_height;
-      const Vec3d direction = add(forward, add(scale(across, right), scale(down, up)));
+      const Vec3d direction = forward + (across * right + down * up);
       const Hit hit = cast(scene, camera.eye, direction);
       if (hit.ambiguous) {
         ++ambiguous;

@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 #include "penumbra/scene/mesh_file.h"
 #include "support/fixtures.h"
 

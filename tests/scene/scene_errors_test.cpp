@@ -6,7 +6,7 @@
 
 #include <fstream>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 #include "penumbra/scene/load_scene.h"
 #include "support/fixtures.h"
 

@@ -5,6 +5,7 @@
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <thread>
 
 #include "penumbra/serve/lighting_server.h"
@@ -63,6 +64,9 @@ BOOST_AUTO_TEST_CASE(the_page_and_the_scene_are_served) {
   BOOST_TEST(json["lights"].size() == 2u);
   BOOST_TEST(json["lights"][0]["controls"]["angles_deg"].size() == 19u);
   BOOST_TEST(json["objects"][0] == "floor");
+  // The scene was loaded from an absolute path; the page gets the file's name only.
+  BOOST_TEST(std::filesystem::path(session.basis().scene_file).is_absolute());
+  BOOST_TEST(json["scene_file"] == "serve-room.json");
 }
 
 // The binary sizes of docs/serve.md: the mesh's header counts and arrays, and the relit

@@ -8,13 +8,14 @@
 #include <cmath>
 #include <random>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
+#include "penumbra/base/numbers.h"
 #include "serve_room.h"
+
+using penumbra::pi;
 
 namespace penumbra::serve {
 namespace {
-
-constexpr double pi = 3.14159265358979323846;
 
 // P_0(x) .. P_n(x) by Bonnet's recurrence, written here independently of the library.
 std::vector<double> legendre(int n, double x) {

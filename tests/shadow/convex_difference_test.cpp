@@ -30,7 +30,8 @@ BOOST_AUTO_TEST_CASE(agrees_with_polygon_set_2) {
     for (int j = 0; j < 1 + iteration % 4; ++j) {
       Ring2 ring = window;
       for (int cut = 0; cut < 1 + (iteration / 4 + j) % 4 && ring.size() >= 3; ++cut) {
-        const Point2 p(coordinate(random), coordinate(random)), q(coordinate(random), coordinate(random));
+        const Point2 p(coordinate(random), coordinate(random)),
+            q(coordinate(random), coordinate(random));
         if (p == q) continue;
         const Exact a = q.y() - p.y(), b = p.x() - q.x();
         ring = detail::clip(ring, {a, b, -(a * p.x() + b * p.y())});
@@ -45,8 +46,8 @@ BOOST_AUTO_TEST_CASE(agrees_with_polygon_set_2) {
       for (std::size_t j = i + 1; j < polygons.size(); ++j) {
         const bool fast = detail::strictly_apart(polygons[i], polygons[j]);
         const Region2 both = detail::unite_minus({polygons[i], polygons[j]});
-        const bool separate =
-            both.polygons.size() == 2 && both.area == signed_area(polygons[i]) + signed_area(polygons[j]);
+        const bool separate = both.polygons.size() == 2 &&
+                              both.area == signed_area(polygons[i]) + signed_area(polygons[j]);
         if (fast) BOOST_TEST(separate);
         apart = apart && fast;
       }

@@ -14,13 +14,23 @@ using namespace penumbra::test;
 
 namespace {
 
-const char* const goldens[] = {
-    "every-kind",         "shadow-cube-point",        "shadow-cube-sun",
-    "shadow-touching",    "shadow-cutting",           "shadow-behind-light",
-    "shadow-shared-face", "shadow-light-in-plane",    "shadow-sun-parallel",
-    "shadow-abutting",    "shadow-collinear-contour", "shadow-light-inside",
-    "linear-fig5",        "linear-fig6",              "linear-degenerate",
-    "linear-joint",       "office"};
+const char* const goldens[] = {"every-kind",
+                               "shadow-cube-point",
+                               "shadow-cube-sun",
+                               "shadow-touching",
+                               "shadow-cutting",
+                               "shadow-behind-light",
+                               "shadow-shared-face",
+                               "shadow-light-in-plane",
+                               "shadow-sun-parallel",
+                               "shadow-abutting",
+                               "shadow-collinear-contour",
+                               "shadow-light-inside",
+                               "linear-fig5",
+                               "linear-fig6",
+                               "linear-degenerate",
+                               "linear-joint",
+                               "office"};
 
 std::string check_command(const std::string& scene, const std::string& golden) {
   return "check '" + scene + "' --golden '" + golden + "'";

@@ -1,10 +1,12 @@
 #include "support/fixtures.h"
 
+#include <png.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace penumbra::test {
 
@@ -17,8 +19,8 @@ std::filesystem::path fixture(const std::string& relative) {
   return source_dir() / "fixtures" / relative;
 }
 
-std::filesystem::path shared_photometry(const std::string& relative) {
-  return source_dir().parent_path() / "shared" / "data" / "photometry" / relative;
+std::filesystem::path photometry_fixture(const std::string& relative) {
+  return fixture("photometry/" + relative);
 }
 
 std::filesystem::path penumbra_binary() {
@@ -42,6 +44,21 @@ std::pair<unsigned, unsigned> png_size(const std::string& bytes) {
     return value;
   };
   return {word(16), word(20)};
+}
+
+PngImage read_png(const std::filesystem::path& path) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&image, path.string().c_str()))
+    throw std::runtime_error("cannot read " + path.string() + ": " + image.message);
+  image.format = PNG_FORMAT_RGB;
+  PngImage result;
+  result.width = image.width;
+  result.height = image.height;
+  result.rgb.resize(PNG_IMAGE_SIZE(image));
+  if (!png_image_finish_read(&image, nullptr, result.rgb.data(), 0, nullptr))
+    throw std::runtime_error("cannot decode " + path.string() + ": " + image.message);
+  return result;
 }
 
 std::filesystem::path scratch_dir(const std::string& name) {

@@ -1,10 +1,13 @@
 #pragma once
-// The one helper tests use to find data: the repository's fixtures/ and the
-// shared photometric files in ../shared/data/photometry/ (STYLE.md habit 9).
+// The one helper tests use to find data: the repository's fixtures/, photometric files
+// included (STYLE.md habit 9). Nothing outside the repository is read.
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace penumbra::test {
 
@@ -12,8 +15,9 @@ namespace penumbra::test {
 std::filesystem::path source_dir();
 // returns fixtures/<relative>.
 std::filesystem::path fixture(const std::string& relative);
-// returns ../shared/data/photometry/<relative>.
-std::filesystem::path shared_photometry(const std::string& relative);
+// returns fixtures/photometry/<relative>: real photometric files (their provenance in
+// fixtures/photometry/README.md).
+std::filesystem::path photometry_fixture(const std::string& relative);
 // returns the built penumbra executable (from CTest's environment).
 std::filesystem::path penumbra_binary();
 
@@ -31,6 +35,19 @@ std::filesystem::path scratch_dir(const std::string& name);
 
 // returns a PNG's width and height, read from its IHDR chunk.
 std::pair<unsigned, unsigned> png_size(const std::string& bytes);
+
+// An 8-bit RGB image as read back from a PNG file.
+struct PngImage {
+  unsigned width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;  // 3 bytes per pixel, rows from the top
+
+  std::array<int, 3> at(unsigned i, unsigned j) const {
+    const std::size_t k = 3 * (static_cast<std::size_t>(j) * width + i);
+    return {rgb[k], rgb[k + 1], rgb[k + 2]};
+  }
+};
+// reads an 8-bit RGB PNG through libpng (an independent reader of what the writer wrote).
+PngImage read_png(const std::filesystem::path& path);
 
 // reads a whole file.
 std::string read_text(const std::filesystem::path& path);

@@ -69,13 +69,13 @@ class BasisBlock {
 // One light as the basis knows it.
 struct BasisLight {
   LightColumns columns;
-  Vec3d position{};             // point lights
+  Vec3d position{};  // point lights
   Vec3d axis{0, 0, -1}, c0{1, 0, 0};
-  nlohmann::json lid;           // the scene's `lid` as written (null: isotropic candela)
-  std::string lid_base;         // directory the lid's file paths are relative to
-  Eigen::VectorXd coefficients; // the scene's own distribution: world SH coefficients
-                                // (point; with sigma factors when options.sigma), or [1]
-                                // (linear, directional)
+  nlohmann::json lid;            // the scene's `lid` as written (null: isotropic candela)
+  std::string lid_base;          // directory the lid's file paths are relative to
+  Eigen::VectorXd coefficients;  // the scene's own distribution: world SH coefficients
+                                 // (point; with sigma factors when options.sigma), or [1]
+                                 // (linear, directional)
   // direct illuminance of each patch (n x count): the same in every channel
   BasisBlock direct;
   // per channel: total illuminance of each patch (n x count) and luminance rho E / pi of
@@ -84,13 +84,13 @@ struct BasisLight {
 };
 
 struct BasisOptions {
-  double patch_size = 0.5;        // m
-  int degree = 5;                 // SH degree of point lights
+  double patch_size = 0.5;                                 // m
+  int degree = 5;                                          // SH degree of point lights
   std::vector<std::pair<std::string, int>> light_degrees;  // overrides by light name
   FormFactorOptions form_factors;
   RadiosityOptions radiosity;
-  double compression = 0;         // max relative Frobenius error of each block; 0 = none
-  bool sigma = true;              // the stored coefficients use the sigma factors (eq. 12)
+  double compression = 0;  // max relative Frobenius error of each block; 0 = none
+  bool sigma = true;       // the stored coefficients use the sigma factors (eq. 12)
   bool parallel = true;
 };
 
@@ -107,14 +107,14 @@ struct BasisLuminances {
   std::vector<std::string> object_names;  // Scene::objects' names, for outputs
   BasisOptions options;
   BasisTimings timings;
-  int iterations = 0;             // radiosity sweeps (largest over channels)
+  int iterations = 0;  // radiosity sweeps (largest over channels)
   std::size_t form_factor_entries = 0;
 
   // returns the light named name, or nullptr.
   const BasisLight* find_light(const std::string& name) const;
 };
 
-// computes the basis luminances of scene. Progress on a terminal (io/progress.h).
+// computes the basis luminances of scene. Progress on a terminal (base/progress.h).
 BasisLuminances compute_basis(const Scene& scene, const BasisOptions& options);
 
 }  // namespace penumbra::basis

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "penumbra/vec3d.h"
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra {
 

@@ -21,7 +21,7 @@
 #include <functional>
 #include <vector>
 
-#include "penumbra/vec3d.h"
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra {
 
@@ -35,9 +35,9 @@ enum class FormFactorMethod { rays, analytic };
 
 struct FormFactorOptions {
   FormFactorMethod method = FormFactorMethod::rays;
-  int rays = 1024;           // rays per patch (rounded down to a square, at least 1)
-  std::uint64_t seed = 1;    // the patch index is mixed in: results do not depend on threads
-  bool parallel = true;      // TBB over patches
+  int rays = 1024;         // rays per patch (rounded down to a square, at least 1)
+  std::uint64_t seed = 1;  // the patch index is mixed in: results do not depend on threads
+  bool parallel = true;    // TBB over patches
 };
 
 // n x n, row i holds F_ij. Row-major sparse: the solver gathers along rows.

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "penumbra/io/tone_map.h"
+#include "penumbra/base/tone_map.h"
 #include "penumbra/scene/camera.h"
 
 namespace penumbra::basis {
@@ -18,8 +18,8 @@ class PatchMesh;
 
 struct GouraudImage {
   int width = 0, height = 0;
-  std::vector<io::LinearRgb> radiance;  // cd/m^2 per channel, row by row from the top
-  std::vector<std::int64_t> patch;      // the patch seen through each pixel centre, or -1
+  std::vector<Colour> radiance;     // cd/m^2 per channel, row by row from the top
+  std::vector<std::int64_t> patch;  // the patch seen through each pixel centre, or -1
 };
 
 // draws mesh with per-vertex luminance (vertices x 3) as camera sees it; pixel (i, j) is

@@ -17,7 +17,8 @@
 
 #include <Eigen/Core>
 
-#include "penumbra/vec3d.h"
+#include "penumbra/base/colour.h"
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra {
 
@@ -26,19 +27,19 @@ struct Scene;
 namespace basis {
 
 struct Patch {
-  std::uint32_t object = 0;  // index into Scene::objects
-  std::uint32_t face = 0;    // index into the object's faces
-  Vec3d centre{};            // area centroid (m)
-  Vec3d normal{};            // unit outward normal of the face
-  double area = 0;           // m^2
-  std::array<double, 3> reflectance{};  // per channel: material reflectance x colour
+  std::uint32_t object = 0;             // index into Scene::objects
+  std::uint32_t face = 0;               // index into the object's faces
+  Vec3d centre{};                       // area centroid (m)
+  Vec3d normal{};                       // unit outward normal of the face
+  double area = 0;                      // m^2
+  Colour reflectance{};                 // per channel: material reflectance x colour
   std::vector<std::uint32_t> vertices;  // convex polygon, counter-clockwise from outside
 };
 
 // How one face was cut: its frame and grid, so a point on the face finds its patch.
 struct FaceGrid {
   std::uint32_t object = 0, face = 0;
-  Vec3d origin{}, u{}, v{};        // the face frame (u, v unit)
+  Vec3d origin{}, u{}, v{};               // the face frame (u, v unit)
   double u0 = 0, v0 = 0, du = 1, dv = 1;  // cell (a, b) spans [u0 + a du, u0 + (a+1) du] x ...
   int nu = 0, nv = 0;
   std::vector<std::int64_t> cells;  // nu * nv entries, a + nu b: patch index or -1
@@ -92,7 +93,7 @@ class PatchMesh {
   std::vector<Vec3d> vertices_;
   std::vector<Patch> patches_;
   std::vector<std::vector<std::pair<std::uint32_t, double>>> vertex_weights_;
-  std::vector<FaceGrid> grids_;  // one per face, in (object, face) order
+  std::vector<FaceGrid> grids_;          // one per face, in (object, face) order
   std::vector<std::size_t> first_grid_;  // per object: index of its face 0's grid
 };
 

@@ -20,7 +20,7 @@
 namespace penumbra::basis {
 
 struct RadiosityOptions {
-  double tolerance = 1e-6;   // relative change of a sweep at which to stop
+  double tolerance = 1e-6;  // relative change of a sweep at which to stop
   int max_iterations = 10000;
   bool parallel = true;
 };
@@ -35,6 +35,7 @@ struct RadiosityResult {
 // solves E = E_direct + F diag(reflectance) E for every column of direct.
 // Preconditions: F is n x n, reflectance has n entries in [0, 1), direct has n rows.
 RadiosityResult solve_radiosity(const FormFactorMatrix& F, const Eigen::VectorXd& reflectance,
-                                const Eigen::MatrixXd& direct, const RadiosityOptions& options = {});
+                                const Eigen::MatrixXd& direct,
+                                const RadiosityOptions& options = {});
 
 }  // namespace penumbra::basis

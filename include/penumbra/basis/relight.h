@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "penumbra/base/colour.h"
 #include "penumbra/basis/basis_luminances.h"
 
 namespace penumbra::photometry {
@@ -22,9 +23,9 @@ class Distribution;
 namespace penumbra::basis {
 
 struct LightSetting {
-  Eigen::VectorXd coefficients;   // world SH coefficients (point) or [1]
-  std::array<double, 3> colour{1, 1, 1};
-  double scale = 1;               // dimming
+  Eigen::VectorXd coefficients;  // world SH coefficients (point) or [1]
+  Colour colour{1, 1, 1};
+  double scale = 1;  // dimming
 };
 
 // One setting per light of the basis, in its order.
@@ -42,8 +43,7 @@ Eigen::VectorXd world_coefficients(const photometry::Distribution& distribution,
 
 // returns the world SH coefficients of the rotationally symmetric series with Legendre
 // weights w_0..w_N (sigma factors already applied or not) about axis.
-Eigen::VectorXd world_coefficients(const std::vector<double>& legendre_weights,
-                                   const Vec3d& axis);
+Eigen::VectorXd world_coefficients(const std::vector<double>& legendre_weights, const Vec3d& axis);
 
 // returns c0 for a lamp re-aimed to axis: the old c0 made orthogonal to the new axis, or
 // any unit vector orthogonal to it when the old one is parallel.

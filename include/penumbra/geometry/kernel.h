@@ -5,7 +5,7 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
-#include "penumbra/vec3d.h"
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra {
 
@@ -21,7 +21,6 @@ using Triangle3 = Kernel::Triangle_3;
 using Point2 = Kernel::Point_2;
 using Vector2 = Kernel::Vector_2;
 using Segment2 = Kernel::Segment_2;
-
 
 // converts a double triple to the exact point it denotes (each double is a rational).
 inline Point3 to_exact(const Vec3d& p) {

@@ -1,13 +1,9 @@
 #pragma once
-// Isolux lines of a work-plane grid (marching squares) and the isolux plot as SVG:
-// coloured belts between the lines (Nishita 1985 section 5, isolux colour belts),
-// the lines with lux labels, a colour legend and the plan of the objects seen from
-// above. Drawing only: doubles throughout. See docs/illuminance.md, "Isolux plot".
-//
-// (The SVG writer belongs with the io/ writers; it lives here until io/ takes it.)
+// Isolux lines of a work-plane grid (marching squares) and the levels they are drawn at
+// (Nishita 1985 section 5). Drawing only: doubles throughout. The isolux plot that draws
+// them is io/isolux_svg.h. See docs/illuminance.md, "Isolux plot".
 
 #include <array>
-#include <ostream>
 #include <vector>
 
 #include "penumbra/illuminance/workplane.h"
@@ -33,9 +29,5 @@ std::vector<double> isolux_levels(double minimum, double maximum);
 // its corners. Segments are joined into polylines.
 std::vector<IsoluxLine> isolux_lines(const WorkplaneValues& values,
                                      const std::vector<double>& levels);
-
-// writes the isolux plot of values over the plan of scene (x to the right, y up).
-void write_isolux_svg(std::ostream& out, const Scene& scene, const WorkplaneValues& values,
-                      const std::vector<double>& levels);
 
 }  // namespace penumbra::illuminance

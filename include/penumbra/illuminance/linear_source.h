@@ -12,11 +12,11 @@
 //
 // Parameters along the source are fractions u in [0, 1]: Q(u) = A + u (B - A).
 
-#include "penumbra/vec3d.h"
 #include <array>
 #include <optional>
 #include <utility>
 #include <vector>
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra {
 

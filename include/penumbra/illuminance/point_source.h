@@ -3,10 +3,10 @@
 // Doubles only: this header decides no geometric question (shadows are the shadow layer's
 // business); it turns "the lamp is seen from P" into lux. See docs/illuminance.md.
 
-#include "penumbra/vec3d.h"
 #include <array>
 #include <type_traits>
 #include <utility>
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra {
 

@@ -18,6 +18,7 @@
 // inside an object gets 0 from every light.
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -85,5 +86,18 @@ class IlluminanceSolver {
 
 // computes the illuminance at one point of scene: the one-shot form of IlluminanceSolver.
 PointIlluminance illuminance_at(const Scene& scene, const Vec3d& point, const Vec3d& normal);
+
+// A receiving point and the unit outward normal of the surface it lies on.
+struct ReceivingPoint {
+  Vec3d point;
+  Vec3d normal;
+};
+
+// computes solver.at(point, normal) at every receiving point, across TBB's threads: the one
+// loop of `illuminance --points` and the work plane. advance, when given, is called with
+// the number of points finished (from several threads) for a progress display.
+std::vector<PointIlluminance> illuminance_at_points(
+    const IlluminanceSolver& solver, const std::vector<ReceivingPoint>& receivers,
+    const std::function<void(std::size_t)>& advance = {});
 
 }  // namespace penumbra::illuminance

@@ -50,6 +50,9 @@ struct WorkplaneValues {
   std::vector<PointIlluminance> values;  // values[k] at grid.point(k)
 };
 
+// returns the grid's points, row by row, each with the normal +z.
+std::vector<ReceivingPoint> workplane_points(const WorkplaneGrid& grid);
+
 // computes the illuminance at every grid point (normal +z), in parallel (TBB).
 // `advance`, when given, is called with the number of points finished (from several
 // threads) for a progress display.

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "penumbra/base/numbers.h"
 #include "penumbra/photometry/distribution.h"
 
 namespace penumbra::photometry {
@@ -41,7 +42,7 @@ class CardioidDistribution final : public Distribution {
   double max_intensity() const override { return candela_; }
   PhotometricDirection max_direction() const override { return {0, 0}; }
   // 2 pi I0: int_0^pi (1 + cos g)/2 sin g dg = 1.
-  double flux() const override { return 2 * kPi * candela_; }
+  double flux() const override { return 2 * pi * candela_; }
   Symmetry symmetry() const override { return Symmetry::axial; }
 
  private:

@@ -13,19 +13,18 @@
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
+#include "penumbra/base/numbers.h"
 
 namespace penumbra::photometry {
-
-inline constexpr double kPi = 3.14159265358979323846;
 
 // converts degrees to radians. Every conversion in the layer goes through this one
 // function, so an angle given in degrees hits a table node exactly.
 inline double radians(double degrees) {
-  return degrees * (kPi / 180.0);
+  return degrees * (pi / 180.0);
 }
 // converts radians to degrees.
 inline double degrees(double radians) {
-  return radians * (180.0 / kPi);
+  return radians * (180.0 / pi);
 }
 
 // The symmetry of a distribution about its axis and its principal planes.

@@ -8,26 +8,23 @@
 // seen from above). This is LM-63 type C (C = 0 along the luminaire's length, C = 90
 // to its left seen from above) and EULUMDAT.
 
-#include <array>
-
+#include "penumbra/base/vec3d.h"
 #include "penumbra/photometry/distribution.h"
 
 namespace penumbra::photometry {
 
-using Direction3 = std::array<double, 3>;
-
 // returns the photometric angles of direction (any length > 0). Preconditions: axis
 // and c0 are unit vectors, orthogonal to each other.
-PhotometricDirection photometric_angles(const Direction3& axis, const Direction3& c0,
-                                        const Direction3& direction);
+PhotometricDirection photometric_angles(const Vec3d& axis, const Vec3d& c0,
+                                        const Vec3d& direction);
 
 // returns the unit world direction of the photometric angles (the inverse).
-Direction3 world_direction(const Direction3& axis, const Direction3& c0,
+Vec3d world_direction(const Vec3d& axis, const Vec3d& c0,
                            const PhotometricDirection& angles);
 
 // returns the intensity in candela that distribution, oriented by axis and c0, sends
 // toward the world direction.
-double intensity_toward(const Distribution& distribution, const Direction3& axis,
-                        const Direction3& c0, const Direction3& direction);
+double intensity_toward(const Distribution& distribution, const Vec3d& axis,
+                        const Vec3d& c0, const Vec3d& direction);
 
 }  // namespace penumbra::photometry

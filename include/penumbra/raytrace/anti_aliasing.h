@@ -8,9 +8,9 @@
 #include <cstddef>
 #include <functional>
 
-namespace penumbra::raytrace {
+#include "penumbra/base/colour.h"
 
-using Radiance = std::array<double, 3>;
+namespace penumbra::raytrace {
 
 struct AdaptiveOptions {
   int max_depth = 3;       // subdivision levels below the pixel (a square of 2^-depth pixels)
@@ -19,19 +19,19 @@ struct AdaptiveOptions {
 };
 
 // A sample of the image at continuous image coordinates (x, y).
-using SampleFunction = std::function<Radiance(double x, double y)>;
+using SampleFunction = std::function<Colour(double x, double y)>;
 
 // The corners of a square in the order (x, y), (x + s, y), (x, y + s), (x + s, y + s).
-using Corners = std::array<Radiance, 4>;
+using Corners = std::array<Colour, 4>;
 
 struct SquareEstimate {
-  Radiance mean{0, 0, 0};   // the area-weighted mean over the square
+  Colour mean{0, 0, 0};   // the area-weighted mean over the square
   std::size_t samples = 0;  // samples taken beyond the four corners given
 };
 
 // returns true when two corner values are not "nearly equal" (section 3): some channel
 // differs by more than options.threshold on the display.
-bool values_differ(const Radiance& a, const Radiance& b, const AdaptiveOptions& options);
+bool values_differ(const Colour& a, const Colour& b, const AdaptiveOptions& options);
 
 // estimates the mean of sample over the square [x, x + size] x [y, y + size] from its
 // corners, subdividing recursively where they differ (depth counts levels already cut).

@@ -5,13 +5,13 @@
 // Embree traverses in single precision; each hit is refined in double precision against the
 // exact face plane or the exact sphere, so hit points lie on the surface to double rounding.
 
-#include "penumbra/vec3d.h"
 #include <array>
 #include <cstddef>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra {
 

@@ -6,9 +6,9 @@
 //
 // Directions are double triples; V is the direction the ray travels (toward the surface).
 
-#include "penumbra/vec3d.h"
 #include <array>
 #include <optional>
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra {
 

@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "penumbra/base/colour.h"
 #include "penumbra/raytrace/embree_scene.h"
 
 namespace penumbra {
@@ -25,7 +26,6 @@ struct Scene;
 namespace raytrace {
 
 // Linear RGB luminance (cd/m^2) per channel.
-using Radiance = std::array<double, 3>;
 
 enum class Attenuation {
   none,   // radiance is conserved along rays (physically right)
@@ -58,7 +58,7 @@ struct RayCounts {
 
 // What one ray brings back.
 struct TraceResult {
-  Radiance radiance{0, 0, 0};
+  Colour radiance{0, 0, 0};
   std::optional<std::size_t> object;  // the first object hit (index into Scene::objects)
   double distance = 0;                // to that hit (infinite on a miss)
 };

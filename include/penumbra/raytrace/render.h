@@ -1,6 +1,6 @@
 #pragma once
-// A whole ray-traced image: camera rays through a PinholeCamera, Whitted's ray tree per
-// sample (RayTracer), anti-aliasing per pixel, in parallel over tiles (TBB).
+// A whole ray-traced image: camera rays through the scene camera (scene/camera_frame.h), Whitted's
+// ray tree per sample (RayTracer), anti-aliasing per pixel, in parallel over tiles (TBB).
 
 #include <array>
 #include <cstddef>
@@ -26,7 +26,7 @@ struct RenderOptions {
   int aa_depth = 3;                // adaptive: subdivision levels below the pixel
   int fixed_grid = 4;              // fixed: samples per pixel side
   double aa_threshold = 0.1;       // display units (sRGB, 0..1), see AdaptiveOptions
-  std::optional<double> exposure;  // 1 / (cd/m^2); automatic when empty (io::auto_exposure)
+  std::optional<double> exposure;  // 1 / (cd/m^2); automatic when empty (auto_exposure)
   bool objects = false;            // record the object seen through each pixel centre
   bool progress = true;            // show progress on a terminal
 };
@@ -34,7 +34,7 @@ struct RenderOptions {
 struct RenderedImage {
   int width = 0;
   int height = 0;
-  std::vector<Radiance> pixels;       // linear luminance per channel, rows from the top
+  std::vector<Colour> pixels;       // linear luminance per channel, rows from the top
   std::vector<long> objects;          // object index per pixel, -1 for the background (if asked)
   double exposure = 1;                // the exposure used to judge corner differences and to save
   RayCounts counts;                   // every ray cast

@@ -9,8 +9,8 @@
 #include <functional>
 #include <vector>
 
+#include "penumbra/base/vec3d.h"
 #include "penumbra/raytrace/tube_visibility.h"
-#include "penumbra/vec3d.h"
 
 namespace penumbra {
 

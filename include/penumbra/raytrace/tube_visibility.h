@@ -18,7 +18,7 @@
 #include <optional>
 #include <vector>
 
-#include "penumbra/vec3d.h"
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra {
 

@@ -10,11 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "penumbra/base/colour.h"
 #include "penumbra/render/scanline_renderer.h"
 
 namespace penumbra::render {
-
-using Rgb8 = std::array<std::uint8_t, 3>;
 
 // returns the belt colour of illuminance e on a scale whose maximum is maximum: hue from
 // 240 degrees (blue) at 0 to 0 (red) at maximum, full saturation. Precondition: maximum > 0.

@@ -63,7 +63,7 @@ class ScanlineRenderer {
   RenderedImage render(const RenderOptions& options = {}) const;
 
   const VisibilityMap& visibility() const;
-  const ViewFrame& view() const;
+  const CameraFrame& view() const;
 
   // returns the point pixel (i, j) sees, lifted by surface_lift off its face so that it
   // is not inside its own solid after rounding, with the face's unit outward normal;

@@ -21,9 +21,6 @@
 
 namespace penumbra::render {
 
-// The pinhole camera of DESIGN.md (scene/camera_frame.h).
-using ViewFrame = CameraFrame;
-
 // A face's plane in doubles: unit outward normal n and offset d, n.Q + d = 0.
 struct FacePlane {
   Vec3d normal;

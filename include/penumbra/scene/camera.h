@@ -3,7 +3,7 @@
 // target, with up, a vertical field of view and an image size in pixels. No CGAL here, so
 // layers that only draw can include it alone.
 
-#include "penumbra/vec3d.h"
+#include "penumbra/base/vec3d.h"
 
 namespace penumbra {
 

@@ -32,6 +32,12 @@ class CameraFrame {
   // forward is 1: eye + t * direction lies at depth t.
   Vec3d direction(double x, double y) const;
 
+  // returns the unit direction of the ray through image point (x, y) (the ray tracer's).
+  Vec3d unit_direction(double x, double y) const;
+
+  // the size of one pixel on the image plane at distance 1 (radians near the axis).
+  double pixel_angle() const { return 2 * half_height_ / height_; }
+
   // returns the image point (x, y) where p projects and its depth along forward, or {}
   // when p is not in front of the eye.
   std::optional<std::array<double, 3>> project(const Vec3d& p) const;

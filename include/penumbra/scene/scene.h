@@ -13,13 +13,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "penumbra/base/colour.h"
 #include "penumbra/geometry/convex_polyhedron.h"
-#include "penumbra/scene/camera.h"
 #include "penumbra/photometry/distribution.h"
+#include "penumbra/scene/camera.h"
 
 namespace penumbra {
-
-using Colour = std::array<double, 3>;
 
 struct Material {
   std::string name;

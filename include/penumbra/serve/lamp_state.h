@@ -12,9 +12,10 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "penumbra/base/colour.h"
+#include "penumbra/base/vec3d.h"
 #include "penumbra/basis/direct_lighting.h"
 #include "penumbra/basis/legendre_editor.h"
-#include "penumbra/vec3d.h"
 
 namespace penumbra::serve {
 
@@ -29,7 +30,7 @@ struct LampState {
   Vec3d position{};      // point lamps
   Vec3d axis{0, 0, -1};  // unit
   Vec3d c0{1, 0, 0};     // unit, orthogonal to axis
-  std::array<double, 3> colour{1, 1, 1};
+  Colour colour{1, 1, 1};
   double scale = 1;   // dimming, >= 0
   bool sigma = true;  // apply sigma factors to the Legendre weights (eq. 12)
   std::optional<basis::LegendreWeightEditor> editor;  // point lamps: the curve being edited

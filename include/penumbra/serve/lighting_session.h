@@ -57,7 +57,7 @@ struct PatchIlluminance {
 struct PatchLux {
   std::uint32_t patch = 0;
   double lux = 0;  // photometric total
-  std::array<double, 3> total{}, direct{};
+  Colour total{}, direct{};  // lux per channel
 };
 
 class LightingSession {

@@ -20,11 +20,11 @@ struct OccluderShadow {
   Ring2 polygon;         // convex, counter-clockwise, canonical, in the face's frame; for a
                          // linear source the occluder's whole shadow (penumbra and umbra)
   // Linear sources only (Nishita 1985 section 4.1, docs/linear-shadows.md):
-  std::optional<Ring2> umbra{};           // convex, inside polygon
+  std::optional<Ring2> umbra{};             // convex, inside polygon
   std::optional<LinearCase> linear_case{};  // App. A2 Case A or B
-  bool object_space = false;              // the contours do not project onto the face: no loops
-  Ring2 penumbra_loop{};                  // raw loops, clockwise, as built (section 4.1.2)
-  Ring2 umbra_loop{};                     // may cross itself
+  bool object_space = false;                // the contours do not project onto the face: no loops
+  Ring2 penumbra_loop{};                    // raw loops, clockwise, as built (section 4.1.2)
+  Ring2 umbra_loop{};                       // may cross itself
 };
 
 struct FaceShadow {
@@ -38,6 +38,9 @@ struct FaceShadow {
   Region2 umbra;                          // linear: union of the occluders' umbrae
   Region2 penumbra;                       // linear: shadow - umbra
   Region2 lit;                            // the face minus shadow
+  // beyond_range with ShadowOptions::occluders_beyond_range: every object that may shadow
+  // the face (a superset, increasing); the regions above are then not computed.
+  std::vector<std::size_t> possible_occluders;
 };
 
 // returns the face's polygon in its own frame (counter-clockwise).

@@ -50,8 +50,9 @@ std::optional<std::pair<Exact, Exact>> line_in_solid(const ConvexPolyhedron& sol
 OpenVolume point_shadow_volume(const ConvexPolyhedron& solid, const Point3& q);
 
 // returns the vertices that may serve as P_L and as P_R (App. A2, eqs. 9-10):
-// vertices common to C1 and C2 whose plane [Q1, Q2, P] has every vertex of the
-// solid on its non-negative side (P_L) or non-positive side (P_R). Several qualify
+// vertices common to C1 and C2 whose plane [Q1, Q2, P] (CGAL orientation of Q1, Q2, P, X)
+// has every vertex X of the solid on its non-positive side (P_L) or non-negative side
+// (P_R): the scan's inequalities flipped, see linear_volumes.cpp. Several qualify
 // when the line Q1Q2 is coplanar with contour edges. Both empty in Case B.
 std::pair<std::vector<int>, std::vector<int>> tangent_vertices(const ConvexPolyhedron& solid,
                                                                const Point3& q1, const Point3& q2);

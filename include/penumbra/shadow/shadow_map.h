@@ -27,6 +27,14 @@ struct ShadowOptions {
   std::optional<double> range_lux;  // an absolute threshold in lux instead of the fraction
   bool broad_phase = true;          // false: test every (occluder, face) pair
   bool parallel = true;             // TBB across faces
+  // only these receiving faces (object index, face index), in any order; every face of every
+  // object when empty. The results are those of the full run for the faces named.
+  std::optional<std::vector<Receiver>> receivers;
+  // for a face wholly beyond a light's sphere of lighting (not computed), list in
+  // FaceShadow::possible_occluders every object that may shadow it: the broad phase's
+  // candidates less those a plane certainly separates from conv(face, source). A superset,
+  // so illuminance computed with it stays exact (the renderer's need).
+  bool occluders_beyond_range = false;
 };
 
 struct ShadowStats {
@@ -52,9 +60,10 @@ struct ShadowResult {
   std::vector<std::string> warnings;  // problems worth reporting that did not stop the work
 };
 
-// computes the shadow maps of every face of scene for its
-// lights. Throws InputError when options.light names no light, or when a linear
-// source touches an object that shadows a face (docs/linear-shadows.md).
+// computes the shadow maps of every face of scene (or of options.receivers) for its
+// lights. Throws InputError when options.light names no light, when options.receivers
+// names a face that does not exist, or when a linear source touches an object that
+// shadows a face (docs/linear-shadows.md).
 ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options = {});
 
 }  // namespace penumbra
