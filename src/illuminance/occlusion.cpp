@@ -1,15 +1,12 @@
 #include "penumbra/illuminance/occlusion.h"
 
+#include "penumbra/geometry/interval.h"
+
 #include <algorithm>
 #include <array>
 
 namespace penumbra::illuminance {
 namespace {
-
-// F(S, X) = n.X + d (Nishita eq. (3), not normalised), exactly.
-Exact plane_value(const Plane3& plane, const Point3& x) {
-  return plane.a() * x.x() + plane.b() * x.y() + plane.c() * x.z() + plane.d();
-}
 
 // narrows the open interval (low, high) of u to where value_at_a + u slope < 0;
 // returns false when it becomes empty.
@@ -91,8 +88,8 @@ std::optional<ExactInterval> hidden_interval(const HiddenRegion& region, const P
     const auto& b_approx = b.approx();
     for (const Plane3& plane : region.volume.planes) {
       const auto& h = plane.approx();
-      const auto at_a = h.a() * a_approx.x() + h.b() * a_approx.y() + h.c() * a_approx.z() + h.d();
-      const auto at_b = h.a() * b_approx.x() + h.b() * b_approx.y() + h.c() * b_approx.z() + h.d();
+      const auto at_a = plane_value(h, a_approx);
+      const auto at_b = plane_value(h, b_approx);
       if (at_a.inf() >= 0 && at_b.inf() >= 0) return std::nullopt;
       if (at_a.sup() < 0 && at_b.sup() < 0) continue;
       uncertain.push_back(&plane);
@@ -107,8 +104,8 @@ std::optional<ExactInterval> hidden_interval(const HiddenRegion& region, const P
   Rational low = 0, high = 1;
   for (const Plane3* plane : uncertain) {
     const auto& h = CGAL::exact(*plane);
-    const Rational at_a = h.a() * exact_a.x() + h.b() * exact_a.y() + h.c() * exact_a.z() + h.d();
-    const Rational at_b = h.a() * exact_b.x() + h.b() * exact_b.y() + h.c() * exact_b.z() + h.d();
+    const Rational at_a = plane_value(h, exact_a);
+    const Rational at_b = plane_value(h, exact_b);
     const Rational slope = at_b - at_a;
     const int slope_sign = CGAL::sign(slope);
     if (slope_sign == 0) {
@@ -128,7 +125,6 @@ std::optional<ExactInterval> hidden_interval(const HiddenRegion& region, const P
 
 HiddenIntervalBounds hidden_interval_filter(const ConvexPolyhedron& occluder, const Vec3d& apex,
                                             const Vec3d& a, const Vec3d& b) {
-  using Interval = CGAL::Interval_nt<false>;
   HiddenIntervalBounds unknown;
   if (occluder.is_flat()) return unknown;
   // Section 4.2.3 in the plane of the triangle (apex, a, b): X = w apex + y a + z b with
@@ -157,9 +153,7 @@ HiddenIntervalBounds hidden_interval_filter(const ConvexPolyhedron& occluder, co
   std::array<Interval, capacity> values;
   for (const Face& face : occluder.faces()) {
     const auto& h = face.plane.approx();
-    const auto value = [&](const Vec3d& x) {
-      return h.a() * x[0] + h.b() * x[1] + h.c() * x[2] + h.d();
-    };
+    const auto value = [&](const Vec3d& x) { return plane_value(h, x); };
     const Interval at_apex = value(apex), at_a = value(a), at_b = value(b);
     if (at_apex.inf() > 0) apex_outside = true;
     // Every vertex certainly inside (F <= 0) or certainly outside (F > 0) the closed

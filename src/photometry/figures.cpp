@@ -18,8 +18,8 @@ bool is_axial(const Distribution& distribution) {
 
 // returns the full angle (degrees) of the arc of the great circle through peak along
 // tangent over which I >= level, walking both ways from peak.
-double arc_angle(const Distribution& distribution, const Vec3d& peak,
-                 const Vec3d& tangent, double level) {
+double arc_angle(const Distribution& distribution, const Vec3d& peak, const Vec3d& tangent,
+                 double level) {
   const Vec3d axis{0, 0, 1}, c0{1, 0, 0};  // the photometric frame as coordinates
   auto intensity_at = [&](double theta, double sign) {
     const double a = std::cos(theta), b = sign * std::sin(theta);
@@ -123,8 +123,8 @@ Figures compute_figures(const Distribution& distribution, const FigureOptions& o
     through = {-along * peak[0] / sideways, -along * peak[1] / sideways, sideways};
   }
   const Vec3d across{peak[1] * through[2] - peak[2] * through[1],
-                          peak[2] * through[0] - peak[0] * through[2],
-                          peak[0] * through[1] - peak[1] * through[0]};
+                     peak[2] * through[0] - peak[0] * through[2],
+                     peak[0] * through[1] - peak[1] * through[0]};
   figures.beam_planes_deg = {arc_angle(distribution, peak, through, 0.5 * figures.max_candela),
                              arc_angle(distribution, peak, across, 0.5 * figures.max_candela)};
   figures.field_planes_deg = {arc_angle(distribution, peak, through, 0.1 * figures.max_candela),

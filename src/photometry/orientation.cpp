@@ -31,8 +31,7 @@ PhotometricDirection photometric_angles(const Vec3d& axis, const Vec3d& c0,
   return angles;
 }
 
-Vec3d world_direction(const Vec3d& axis, const Vec3d& c0,
-                           const PhotometricDirection& angles) {
+Vec3d world_direction(const Vec3d& axis, const Vec3d& c0, const PhotometricDirection& angles) {
   const Vec3d c90 = cross(c0, axis);
   const double s = std::sin(angles.gamma), a = std::cos(angles.gamma);
   const double x = s * std::cos(angles.c), y = s * std::sin(angles.c);
@@ -40,8 +39,8 @@ Vec3d world_direction(const Vec3d& axis, const Vec3d& c0,
           a * axis[2] + x * c0[2] + y * c90[2]};
 }
 
-double intensity_toward(const Distribution& distribution, const Vec3d& axis,
-                        const Vec3d& c0, const Vec3d& direction) {
+double intensity_toward(const Distribution& distribution, const Vec3d& axis, const Vec3d& c0,
+                        const Vec3d& direction) {
   const PhotometricDirection angles = photometric_angles(axis, c0, direction);
   return distribution.intensity(angles.gamma, angles.c);
 }

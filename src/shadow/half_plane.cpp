@@ -1,5 +1,7 @@
 #include "half_plane.h"
 
+#include "penumbra/geometry/interval.h"
+
 #include <vector>
 
 #include "penumbra/geometry/convex_polyhedron.h"
@@ -9,8 +11,7 @@ namespace penumbra::detail {
 HalfPlane restrict_to(const Plane3& plane, const FaceFrame& frame) {
   const Vector3 normal = plane.orthogonal_vector();
   const Point3& o = frame.origin();
-  return {normal * frame.u(), normal * frame.v(),
-          plane.a() * o.x() + plane.b() * o.y() + plane.c() * o.z() + plane.d()};
+  return {normal * frame.u(), normal * frame.v(), plane_value(plane, o)};
 }
 
 Ring2 clip(const Ring2& ring, const HalfPlane& half) {

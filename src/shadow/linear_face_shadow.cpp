@@ -1,5 +1,7 @@
 #include "penumbra/shadow/linear_face_shadow.h"
 
+#include "penumbra/geometry/interval.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -12,10 +14,6 @@
 
 namespace penumbra {
 namespace {
-
-Exact plane_value(const Plane3& plane, const Point3& p) {
-  return plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d();
-}
 
 // returns true when the closed segment ab meets the closed solid.
 bool segment_meets(const ConvexPolyhedron& solid, const Point3& a, const Point3& b) {

@@ -1,5 +1,7 @@
 #include "penumbra/shadow/linear_shadow.h"
 
+#include "penumbra/geometry/interval.h"
+
 #include <algorithm>
 
 #include "../geometry/convex_hull_2.h"
@@ -8,10 +10,6 @@
 
 namespace penumbra {
 namespace {
-
-Exact plane_value(const Plane3& plane, const Point3& p) {
-  return plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d();
-}
 
 std::optional<Ring2> clip_face(const Face& face, const OpenVolume& volume) {
   if (volume.planes.empty()) return std::nullopt;

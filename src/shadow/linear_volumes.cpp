@@ -1,5 +1,7 @@
 #include "penumbra/shadow/linear_volumes.h"
 
+#include "penumbra/geometry/interval.h"
+
 #include <algorithm>
 
 #include "penumbra/shadow/contour.h"
@@ -51,8 +53,8 @@ std::optional<std::pair<Exact, Exact>> line_in_solid(const ConvexPolyhedron& sol
     // A two-sided polygon is not the slab between its two (opposite) planes: the
     // line meets it at its crossing with the plane, if that lies in the polygon.
     const Plane3& plane = solid.faces().front().plane;
-    const Exact f1 = plane.a() * q1.x() + plane.b() * q1.y() + plane.c() * q1.z() + plane.d();
-    const Exact f2 = plane.a() * q2.x() + plane.b() * q2.y() + plane.c() * q2.z() + plane.d();
+    const Exact f1 = plane_value(plane, q1);
+    const Exact f2 = plane_value(plane, q2);
     if (f1 == f2) return std::nullopt;  // parallel (a line in the plane casts no contour)
     const Exact t = f1 / (f1 - f2);
     if (solid.bounded_side(q1 + t * (q2 - q1)) == CGAL::ON_UNBOUNDED_SIDE) return std::nullopt;
@@ -62,8 +64,7 @@ std::optional<std::pair<Exact, Exact>> line_in_solid(const ConvexPolyhedron& sol
   const Vector3 direction = q2 - q1;
   for (const Face& face : solid.faces()) {
     // F(q1 + t d) = F(q1) + t n.d <= 0.
-    const Exact at_q1 = face.plane.a() * q1.x() + face.plane.b() * q1.y() +
-                        face.plane.c() * q1.z() + face.plane.d();
+    const Exact at_q1 = plane_value(face.plane, q1);
     const Exact slope = face.normal() * direction;
     if (CGAL::is_zero(slope)) {
       if (CGAL::is_positive(at_q1)) return std::nullopt;

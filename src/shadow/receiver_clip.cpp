@@ -7,7 +7,6 @@
 namespace penumbra::detail {
 namespace {
 
-using Interval = CGAL::Interval_nt<false>;
 using Rational = ReceiverClip::Rational;
 using ExactPoint2 = std::decay_t<decltype(CGAL::exact(std::declval<const Point2&>()))>;
 
@@ -124,10 +123,9 @@ std::optional<Ring2> ReceiverClip::clip(const std::vector<Plane3>& volume) const
     {
       CGAL::Protect_FPU_rounding<true> upward;
       const auto& plane = CGAL::approx(volume[j]);
-      a = plane.a() * u_box_[0] + plane.b() * u_box_[1] + plane.c() * u_box_[2];
-      b = plane.a() * v_box_[0] + plane.b() * v_box_[1] + plane.c() * v_box_[2];
-      c = plane.a() * origin_box_[0] + plane.b() * origin_box_[1] + plane.c() * origin_box_[2] +
-          plane.d();
+      a = normal_dot(plane, u_box_);
+      b = normal_dot(plane, v_box_);
+      c = plane_value(plane, origin_box_);
     }
     const CGAL::Uncertain<bool> a_zero = CGAL::is_zero(a), b_zero = CGAL::is_zero(b);
     const bool constant =

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "penumbra/geometry/convex_polyhedron.h"
+#include "penumbra/geometry/interval.h"
 #include "penumbra/shadow/region.h"
 
 namespace penumbra::detail {
@@ -40,8 +41,6 @@ class ReceiverClip {
   };
 
  private:
-  using Interval = CGAL::Interval_nt<false>;
-
   Line trace(const Plane3& plane) const;
 
   const Face* face_;

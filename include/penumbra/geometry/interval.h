@@ -8,6 +8,8 @@
 #include <CGAL/Interval_nt.h>
 
 #include <array>
+#include <type_traits>
+#include <utility>
 
 namespace penumbra {
 
@@ -18,15 +20,21 @@ using IntervalPoint = std::array<Interval, 3>;
 // 1985 eq. 3). Works for every plane with a()..d() (an exact plane, its interval or rational
 // approximation) and every point indexed by [] (Vec3d, IntervalPoint, CGAL points); in
 // interval arithmetic it needs upward rounding.
+// The result has the type of the plane's coefficients (evaluated there, so that no
+// expression template of gmpxx outlives its operands).
 template <class Plane, class Point>
-auto plane_value(const Plane& plane, const Point& x) {
-  return plane.a() * x[0] + plane.b() * x[1] + plane.c() * x[2] + plane.d();
+std::decay_t<decltype(std::declval<const Plane&>().a())> plane_value(const Plane& plane,
+                                                                     const Point& x) {
+  using Value = std::decay_t<decltype(plane.a())>;
+  return Value(plane.a() * x[0] + plane.b() * x[1] + plane.c() * x[2] + plane.d());
 }
 
 // returns n . x for a normal n given by its three components a(), b(), c().
 template <class Plane, class Vector>
-auto normal_dot(const Plane& plane, const Vector& x) {
-  return plane.a() * x[0] + plane.b() * x[1] + plane.c() * x[2];
+std::decay_t<decltype(std::declval<const Plane&>().a())> normal_dot(const Plane& plane,
+                                                                    const Vector& x) {
+  using Value = std::decay_t<decltype(plane.a())>;
+  return Value(plane.a() * x[0] + plane.b() * x[1] + plane.c() * x[2]);
 }
 
 // returns the interval enclosure of an exact point's coordinates (its approximation).

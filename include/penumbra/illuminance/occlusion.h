@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "penumbra/geometry/convex_polyhedron.h"
+#include "penumbra/geometry/interval.h"
 #include "penumbra/shadow/linear_volumes.h"
 
 namespace penumbra::illuminance {
@@ -62,7 +63,7 @@ struct HiddenIntervalBounds {
     unknown    // intervals cannot decide: ask the exact functions
   };
   Verdict verdict = Verdict::unknown;
-  CGAL::Interval_nt<false> low{0}, high{0};
+  Interval low{0}, high{0};
 };
 
 // computes, in interval arithmetic, the sub-segment of the source a -> b hidden from apex

@@ -15,16 +15,14 @@ namespace penumbra::photometry {
 
 // returns the photometric angles of direction (any length > 0). Preconditions: axis
 // and c0 are unit vectors, orthogonal to each other.
-PhotometricDirection photometric_angles(const Vec3d& axis, const Vec3d& c0,
-                                        const Vec3d& direction);
+PhotometricDirection photometric_angles(const Vec3d& axis, const Vec3d& c0, const Vec3d& direction);
 
 // returns the unit world direction of the photometric angles (the inverse).
-Vec3d world_direction(const Vec3d& axis, const Vec3d& c0,
-                           const PhotometricDirection& angles);
+Vec3d world_direction(const Vec3d& axis, const Vec3d& c0, const PhotometricDirection& angles);
 
 // returns the intensity in candela that distribution, oriented by axis and c0, sends
 // toward the world direction.
-double intensity_toward(const Distribution& distribution, const Vec3d& axis,
-                        const Vec3d& c0, const Vec3d& direction);
+double intensity_toward(const Distribution& distribution, const Vec3d& axis, const Vec3d& c0,
+                        const Vec3d& direction);
 
 }  // namespace penumbra::photometry

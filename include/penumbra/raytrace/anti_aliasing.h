@@ -25,7 +25,7 @@ using SampleFunction = std::function<Colour(double x, double y)>;
 using Corners = std::array<Colour, 4>;
 
 struct SquareEstimate {
-  Colour mean{0, 0, 0};   // the area-weighted mean over the square
+  Colour mean{0, 0, 0};     // the area-weighted mean over the square
   std::size_t samples = 0;  // samples taken beyond the four corners given
 };
 

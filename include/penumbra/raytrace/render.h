@@ -34,7 +34,7 @@ struct RenderOptions {
 struct RenderedImage {
   int width = 0;
   int height = 0;
-  std::vector<Colour> pixels;       // linear luminance per channel, rows from the top
+  std::vector<Colour> pixels;         // linear luminance per channel, rows from the top
   std::vector<long> objects;          // object index per pixel, -1 for the background (if asked)
   double exposure = 1;                // the exposure used to judge corner differences and to save
   RayCounts counts;                   // every ray cast

@@ -56,7 +56,7 @@ struct PatchIlluminance {
 // The illuminance of one patch.
 struct PatchLux {
   std::uint32_t patch = 0;
-  double lux = 0;  // photometric total
+  double lux = 0;            // photometric total
   Colour total{}, direct{};  // lux per channel
 };
 
