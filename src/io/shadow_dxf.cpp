@@ -11,15 +11,22 @@ namespace {
 
 using namespace vector_ops;
 
+// returns v with each component divided by its length: correctly rounded, unlike
+// unit()'s product with the reciprocal, so the drawing's numbers stay as they were.
+Vec3d unit(const Vec3d& v) {
+  const double l = length(v);
+  return {v[0] / l, v[1] / l, v[2] / l};
+}
+
 // The object coordinate system of an entity with extrusion direction n (DXF
 // reference, "Arbitrary Axis Algorithm").
 struct Ocs {
   Vec3d x, y, z;
-  explicit Ocs(const Vec3d& normal) : z(normalized(normal)) {
+  explicit Ocs(const Vec3d& normal) : z(unit(normal)) {
     const double limit = 1.0 / 64;
-    x = normalized(std::abs(z[0]) < limit && std::abs(z[1]) < limit ? cross({0, 1, 0}, z)
+    x = unit(std::abs(z[0]) < limit && std::abs(z[1]) < limit ? cross({0, 1, 0}, z)
                                                                     : cross({0, 0, 1}, z));
-    y = normalized(cross(z, x));
+    y = unit(cross(z, x));
   }
 };
 

@@ -68,15 +68,16 @@ BOOST_AUTO_TEST_CASE(basis_relight_and_radiosity_agree) {
   // same mesh and form factors; the distributions differ only by the degree-2 series
   // (with sigma factors), whose w_0 is exact: the flux each lamp sends into the closed
   // room is the same, so the direct flux on all patches agrees up to how differently the
-  // patch centres sample the two distributions (0.5 m patches, lamps 0.4 m from the
-  // ceiling: a few percent)
+  // patch centres sample the two distributions. docs/basis.md ("Radiosity", CIE 171 test
+  // 5.8) reports the sampled direct flux within 0.5% of the lamps' flux at 0.5 m patches,
+  // so the two sums differ by at most 1% (measured: 0.56%)
   double sum_relit = 0, sum_solved = 0;
   for (std::size_t i = 0; i < relit.at("E").size(); ++i) {
     const double area = std::stod(relit.at("area")[i]);
     sum_relit += area * std::stod(relit.at("E_direct")[i]);
     sum_solved += area * std::stod(solved.at("E_direct")[i]);
   }
-  BOOST_TEST(sum_relit == sum_solved, boost::test_tools::tolerance(0.1));
+  BOOST_TEST(sum_relit == sum_solved, boost::test_tools::tolerance(0.01));
 
   result = run_penumbra("relight " + pbl +
                         " --aim corner=1,5,0 --scale centre=0.5 --color centre=1,0.8,0.6 -o " +

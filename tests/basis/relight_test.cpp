@@ -97,16 +97,19 @@ BOOST_AUTO_TEST_CASE(real_distribution_converges_with_degree) {
   const Scene scene = test::closed_room(4, 0.5, lamp);
   BasisOptions options = small_options();
   const SceneRadiosity direct = solve_scene_radiosity(scene, options);
+  // docs/basis.md reports 32%, 21% and 9% at degrees 2, 5 and 8 (plain weights): each
+  // degree must stay within those figures, rounded up to the next percent.
+  const std::pair<int, double> bounds[] = {{2, 0.33}, {5, 0.22}, {8, 0.09}};
   double previous = 1e300;
-  for (int degree : {2, 5, 8}) {
+  for (const auto& [degree, bound] : bounds) {
     options.degree = degree;
     const BasisLuminances basis = compute_basis(scene, options);
     const double error = relative_difference(relight(basis, default_lighting(basis)), direct);
     BOOST_TEST_MESSAGE("degree " << degree << ": max relative error " << error);
     BOOST_TEST(error < previous);
+    BOOST_TEST(error <= bound, "degree " << degree << ": " << error);
     previous = error;
   }
-  BOOST_TEST(previous < 0.2);
 }
 
 BOOST_AUTO_TEST_CASE(basis_file_round_trip_and_compression) {
