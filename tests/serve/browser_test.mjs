@@ -102,6 +102,8 @@ async function main() {
     });
     await page.goto(url);
     await page.waitForFunction(() => document.body.dataset.ready === 'true', null, {timeout: 120000});
+    // The scene was given by its absolute path: the page names the file only.
+    assert.equal(await page.textContent('#scene-name'), path.basename(scene));
     assert.deepEqual(problems, []);
     const view = page.locator('#view');
 
