@@ -1,6 +1,5 @@
 #include "penumbra/base/atomic_file.h"
 
-#include <fstream>
 #include <random>
 #include <system_error>
 
@@ -8,31 +7,36 @@
 
 namespace penumbra {
 
+AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
+  std::random_device entropy;
+  temporary_ = path_;
+  temporary_ += ".tmp-" + std::to_string(entropy());
+  out_.open(temporary_, std::ios::binary);
+  if (!out_) throw InputError(path_.string(), "", "cannot create the output file");
+}
+
+AtomicFile::~AtomicFile() {
+  if (committed_) return;
+  out_.close();
+  std::error_code ignored;
+  std::filesystem::remove(temporary_, ignored);
+}
+
+void AtomicFile::commit() {
+  out_.flush();
+  if (!out_) throw InputError(path_.string(), "", "writing the output file failed");
+  out_.close();
+  std::error_code error;
+  std::filesystem::rename(temporary_, path_, error);
+  if (error) throw InputError(path_.string(), "", "cannot move the finished output into place");
+  committed_ = true;
+}
+
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(std::ostream&)>& write) {
-  std::random_device entropy;
-  std::filesystem::path temporary = path;
-  temporary += ".tmp-" + std::to_string(entropy());
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if (!out) throw InputError(path.string(), "", "cannot create the output file");
-    try {
-      write(out);
-      out.flush();
-      if (!out) throw InputError(path.string(), "", "writing the output file failed");
-    } catch (...) {
-      out.close();
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw;
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    throw InputError(path.string(), "", "cannot move the finished output into place");
-  }
+  AtomicFile file(path);
+  write(file.stream());
+  file.commit();
 }
 
 }  // namespace penumbra

@@ -14,15 +14,12 @@ namespace {
 // prints the plane scaled so that its largest normal component has magnitude 1:
 // a canonical exact form, then the same in doubles.
 void print_plane(std::ostream& out, const Plane3& plane) {
-  Exact scale = CGAL::abs(plane.a());
-  for (const Exact& c : {plane.b(), plane.c()})
-    if (CGAL::abs(c) > scale) scale = CGAL::abs(c);
-  const Exact coefficients[4] = {plane.a() / scale, plane.b() / scale, plane.c() / scale,
-                                 plane.d() / scale};
+  const std::array<Rational, 4> coefficients = io::canonical_plane(plane);
   out << "plane [";
   for (int i = 0; i < 4; ++i) out << (i ? ", " : "") << io::rational_string(coefficients[i]);
   out << "] ~ [";
-  for (int i = 0; i < 4; ++i) out << (i ? ", " : "") << CGAL::to_double(coefficients[i]);
+  // Rounded from the exact value (+ 0.0 prints an exact zero as 0, never -0).
+  for (int i = 0; i < 4; ++i) out << (i ? ", " : "") << CGAL::to_double(coefficients[i]) + 0.0;
   out << "]";
 }
 

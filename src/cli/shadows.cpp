@@ -3,6 +3,7 @@
 
 #include <iostream>
 #include <memory>
+#include <vector>
 
 #include "penumbra/base/atomic_file.h"
 #include "penumbra/base/input_error.h"
@@ -54,23 +55,28 @@ int run_shadows(const ShadowsArguments& arguments) {
   json_options.range_fraction = options.range_fraction;
   json_options.full_scale_lux = options.full_scale_lux;
   json_options.range_lux = options.range_lux;
-  const nlohmann::json document = shadow_json(scene, result, json_options);
-
+  // Every output streams face by face: the document is never held whole.
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  std::vector<std::unique_ptr<io::ShadowDocumentSink>> writers;
+  const auto file = [&](const std::string& path) -> std::ostream& {
+    files.push_back(std::make_unique<AtomicFile>(path));
+    return files.back()->stream();
+  };
   if (arguments.output.empty() || arguments.output == "-")
-    std::cout << io::format_json(document);
+    writers.push_back(std::make_unique<io::ShadowJsonWriter>(std::cout));
   else
-    write_atomically(arguments.output,
-                     [&](std::ostream& out) { out << io::format_json(document); });
+    writers.push_back(std::make_unique<io::ShadowJsonWriter>(file(arguments.output)));
   if (!arguments.svg.empty())
-    write_atomically(arguments.svg, [&](std::ostream& out) {
-      io::write_shadow_svg(out, document, *view, scene.camera, arguments.loops);
-    });
+    writers.push_back(std::make_unique<io::ShadowSvgWriter>(file(arguments.svg), *view,
+                                                            scene.camera, arguments.loops));
   if (!arguments.dxf.empty())
-    write_atomically(arguments.dxf,
-                     [&](std::ostream& out) { io::write_shadow_dxf(out, document); });
+    writers.push_back(std::make_unique<io::ShadowDxfWriter>(file(arguments.dxf)));
   if (!arguments.report.empty())
-    write_atomically(arguments.report,
-                     [&](std::ostream& out) { io::write_shadow_csv(out, document); });
+    writers.push_back(std::make_unique<io::ShadowCsvWriter>(file(arguments.report)));
+  std::vector<io::ShadowDocumentSink*> sinks;
+  for (const auto& writer : writers) sinks.push_back(writer.get());
+  io::stream_shadow_document(scene, result, json_options, sinks);
+  for (const auto& finished : files) finished->commit();
 
   if (arguments.stats)
     for (const LightShadows& light : result.lights) {

@@ -32,19 +32,6 @@ std::vector<int> convex_hull_2(const std::vector<Point2>& points) {
   return hull;
 }
 
-bool direction_less(const Vector3& a, const Vector3& b) {
-  const Exact a_length = a.squared_length();
-  const Exact b_length = b.squared_length();
-  for (int i = 0; i < 3; ++i) {
-    // sign(a_i) a_i^2 / |a|^2 is monotone in a_i / |a|; cross-multiply the lengths.
-    const Exact ka = (a[i] < 0 ? -a[i] * a[i] : a[i] * a[i]) * b_length;
-    const Exact kb = (b[i] < 0 ? -b[i] * b[i] : b[i] * b[i]) * a_length;
-    if (ka < kb) return true;
-    if (kb < ka) return false;
-  }
-  return false;
-}
-
 Vector3 in_plane_direction(const Vector3& normal) {
   // Cross with the coordinate axis least aligned with the normal: never parallel.
   int axis = 0;

@@ -2,6 +2,7 @@
 // Exact 2D convex hull (Andrew's monotone chain) over points with their input
 // indices; the hull keeps extreme points only (collinear boundary points dropped).
 
+#include <type_traits>
 #include <vector>
 
 #include "penumbra/geometry/kernel.h"
@@ -14,8 +15,22 @@ namespace penumbra::detail {
 std::vector<int> convex_hull_2(const std::vector<Point2>& points);
 
 // compares directions by the lexicographic (x, y, z) order of their unit vectors,
-// exactly (no square roots): a strict weak order whose ties are equal directions.
-bool direction_less(const Vector3& a, const Vector3& b);
+// exactly (no square roots): a strict weak order whose ties are equal directions. For
+// Epeck vectors and for rational ones.
+template <class Vector>
+bool direction_less(const Vector& a, const Vector& b) {
+  using Number = std::decay_t<decltype(a.squared_length())>;
+  const Number a_length = a.squared_length();
+  const Number b_length = b.squared_length();
+  for (int i = 0; i < 3; ++i) {
+    // sign(a_i) a_i^2 / |a|^2 is monotone in a_i / |a|; cross-multiply the lengths.
+    const Number ka = (a[i] < 0 ? Number(-a[i] * a[i]) : Number(a[i] * a[i])) * b_length;
+    const Number kb = (b[i] < 0 ? Number(-b[i] * b[i]) : Number(b[i] * b[i])) * a_length;
+    if (ka < kb) return true;
+    if (kb < ka) return false;
+  }
+  return false;
+}
 
 // returns an in-plane direction for the plane with the given normal.
 Vector3 in_plane_direction(const Vector3& normal);

@@ -26,23 +26,35 @@ ConvexPolyhedron ConvexPolyhedron::from_faces(std::vector<std::vector<Point3>> f
                                               bool flat) {
   ConvexPolyhedron solid;
   solid.flat_ = flat;
+  std::vector<Face> faces;
+  std::vector<RationalVector3> normals;
   for (auto& cycle : face_cycles) {
     start_at_smallest(cycle);
     solid.vertices_.insert(solid.vertices_.end(), cycle.begin(), cycle.end());
+    // Three consecutive vertices of a strictly convex counter-clockwise cycle give the
+    // outward orientation (Nishita eq. 3: F positive outside). The plane, its normal and
+    // the frame's first axis are computed once in rationals (the same coefficients as the
+    // lazy Plane_3 of the three points).
+    const RationalPoint3& p = CGAL::exact(cycle[0]);
+    const RationalPoint3& q = CGAL::exact(cycle[1]);
+    const RationalPlane3 plane(p, q, CGAL::exact(cycle[2]));
     Face face;
-    // Three consecutive vertices of a strictly convex counter-clockwise cycle give
-    // the outward orientation (Nishita eq. 3: F positive outside).
-    face.plane = Plane3(cycle[0], cycle[1], cycle[2]);
-    face.frame = FaceFrame(cycle[0], cycle[1] - cycle[0], face.plane.orthogonal_vector());
+    face.plane = from_exact<Plane3>(plane);
+    normals.push_back(plane.orthogonal_vector());
+    face.frame =
+        FaceFrame(cycle[0], from_exact<Vector3>(q - p), from_exact<Vector3>(normals.back()));
     face.vertices = std::move(cycle);
-    solid.faces_.push_back(std::move(face));
+    faces.push_back(std::move(face));
   }
   std::sort(solid.vertices_.begin(), solid.vertices_.end(), point_less);
   solid.vertices_.erase(std::unique(solid.vertices_.begin(), solid.vertices_.end()),
                         solid.vertices_.end());
-  std::sort(solid.faces_.begin(), solid.faces_.end(), [](const Face& a, const Face& b) {
-    return detail::direction_less(a.normal(), b.normal());
+  std::vector<std::size_t> order(faces.size());
+  for (std::size_t f = 0; f < order.size(); ++f) order[f] = f;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return detail::direction_less(normals[a], normals[b]);
   });
+  for (std::size_t f : order) solid.faces_.push_back(std::move(faces[f]));
 
   std::map<std::pair<int, int>, int> face_of_edge;
   for (std::size_t f = 0; f < solid.faces_.size(); ++f) {

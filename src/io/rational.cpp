@@ -4,11 +4,23 @@
 
 namespace penumbra::io {
 
-std::string rational_string(const Exact& x) {
-  // The exact type streams as "p/q" in lowest terms ("p" when q = 1).
+std::string rational_string(const Rational& x) {
+  // The rational type streams as "p/q" in lowest terms ("p" when q = 1).
   std::ostringstream out;
-  out << CGAL::exact(x);
+  out << x;
   return out.str();
+}
+
+std::string rational_string(const Exact& x) {
+  return rational_string(CGAL::exact(x));
+}
+
+std::array<Rational, 4> canonical_plane(const Plane3& plane) {
+  const RationalPlane3& exact = CGAL::exact(plane);
+  Rational scale = abs(exact.a());
+  for (const Rational& c : {exact.b(), exact.c()})
+    if (abs(c) > scale) scale = abs(c);
+  return {exact.a() / scale, exact.b() / scale, exact.c() / scale, exact.d() / scale};
 }
 
 }  // namespace penumbra::io

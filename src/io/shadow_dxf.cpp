@@ -12,7 +12,7 @@ namespace {
 using namespace vector_ops;
 
 // returns v with each component divided by its length: correctly rounded, unlike
-// unit()'s product with the reciprocal, so the drawing's numbers stay as they were.
+// normalized()'s product with the reciprocal, so the drawing's numbers stay as they were.
 Vec3d unit(const Vec3d& v) {
   const double l = length(v);
   return {v[0] / l, v[1] / l, v[2] / l};
@@ -25,14 +25,16 @@ struct Ocs {
   explicit Ocs(const Vec3d& normal) : z(unit(normal)) {
     const double limit = 1.0 / 64;
     x = unit(std::abs(z[0]) < limit && std::abs(z[1]) < limit ? cross({0, 1, 0}, z)
-                                                                    : cross({0, 0, 1}, z));
+                                                              : cross({0, 0, 1}, z));
     y = unit(cross(z, x));
   }
 };
 
-class DxfWriter {
+}  // namespace
+
+class ShadowDxfWriter::Writer {
  public:
-  explicit DxfWriter(std::ostream& out) : out_(out) { out_ << std::setprecision(17); }
+  explicit Writer(std::ostream& out) : out_(out) { out_ << std::setprecision(17); }
 
   void tag(int code, const std::string& value) { out_ << code << "\n" << value << "\n"; }
   void tag(int code, double value) { out_ << code << "\n" << value << "\n"; }
@@ -69,16 +71,18 @@ class DxfWriter {
   unsigned next_handle_ = 0x100;
 };
 
-}  // namespace
+ShadowDxfWriter::ShadowDxfWriter(std::ostream& out) : writer_(new Writer(out)) {}
 
-void write_shadow_dxf(std::ostream& out, const nlohmann::json& document) {
+ShadowDxfWriter::~ShadowDxfWriter() = default;
+
+void ShadowDxfWriter::begin(const nlohmann::json& header, std::size_t faces) {
+  // Layers: the faces, and four per light when there are faces to draw on.
   std::set<std::string> layers{"faces"};
-  for (const auto& face : document.at("faces"))
-    for (const auto& light : face.at("lights")) {
+  if (faces > 0)
+    for (const auto& light : header.at("lights"))
       for (const char* kind : {"-shadow", "-umbra", "-penumbra", "-lit"})
-        layers.insert(light.at("light").get<std::string>() + kind);
-    }
-  DxfWriter dxf(out);
+        layers.insert(light.at("name").get<std::string>() + kind);
+  Writer& dxf = *writer_;
   dxf.tag(0, "SECTION");
   dxf.tag(2, "HEADER");
   dxf.tag(9, "$ACADVER");
@@ -108,23 +112,32 @@ void write_shadow_dxf(std::ostream& out, const nlohmann::json& document) {
   dxf.tag(0, "ENDSEC");
   dxf.tag(0, "SECTION");
   dxf.tag(2, "ENTITIES");
-  for (const auto& face : document.at("faces")) {
-    const auto& plane = face.at("plane");
-    const Vec3d normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
-    dxf.polyline("faces", face.at("boundary"), normal);
-    for (const auto& light : face.at("lights")) {
-      if (light.value("beyond_range", false)) continue;
-      const std::string name = light.at("light");
-      for (const char* kind : {"shadow", "umbra", "penumbra", "lit"})
-        for (const auto& polygon : light.at(kind).at("polygons")) {
-          dxf.polyline(name + "-" + kind, polygon.at("outer"), normal);
-          for (const auto& hole : polygon.at("holes"))
-            dxf.polyline(name + "-" + kind, hole, normal);
-        }
-    }
+}
+
+void ShadowDxfWriter::face(const nlohmann::json& face) {
+  Writer& dxf = *writer_;
+  const auto& plane = face.at("plane");
+  const Vec3d normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
+  dxf.polyline("faces", face.at("boundary"), normal);
+  for (const auto& light : face.at("lights")) {
+    if (light.value("beyond_range", false)) continue;
+    const std::string name = light.at("light");
+    for (const char* kind : {"shadow", "umbra", "penumbra", "lit"})
+      for (const auto& polygon : light.at(kind).at("polygons")) {
+        dxf.polyline(name + "-" + kind, polygon.at("outer"), normal);
+        for (const auto& hole : polygon.at("holes")) dxf.polyline(name + "-" + kind, hole, normal);
+      }
   }
-  dxf.tag(0, "ENDSEC");
-  dxf.tag(0, "EOF");
+}
+
+void ShadowDxfWriter::end() {
+  writer_->tag(0, "ENDSEC");
+  writer_->tag(0, "EOF");
+}
+
+void write_shadow_dxf(std::ostream& out, const nlohmann::json& document) {
+  ShadowDxfWriter writer(out);
+  feed_shadow_document(writer, document);
 }
 
 }  // namespace penumbra::io

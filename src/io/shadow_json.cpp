@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "penumbra/base/parallel.h"
 #include "penumbra/io/rational.h"
 
 namespace penumbra::io {
@@ -12,30 +13,40 @@ using nlohmann::json;
 // rounds from the exact value, never from the lazy kernel's interval, whose width
 // depends on what was evaluated before (and so on threads); adding +0.0 turns -0.0
 // into 0.0, so that equal points print alike.
+double rounded(const Rational& x) {
+  return CGAL::to_double(x) + 0.0;
+}
 double rounded(const Exact& x) {
-  return CGAL::to_double(x.exact()) + 0.0;
+  return rounded(x.exact());
 }
 
-json point_json(const Point3& p) {
+json point_json(const RationalPoint3& p) {
   return json::array({rounded(p.x()), rounded(p.y()), rounded(p.z())});
+}
+json point_json(const Point3& p) {
+  return point_json(CGAL::exact(p));
 }
 
 // the unit vector along v, rounded from v's exact coordinates.
 json unit_json(const Vector3& v) {
-  const double x = rounded(v.x()), y = rounded(v.y()), z = rounded(v.z());
+  const RationalVector3& exact = CGAL::exact(v);
+  const double x = rounded(exact.x()), y = rounded(exact.y()), z = rounded(exact.z());
   const double length = std::sqrt(x * x + y * y + z * z);
   return json::array({x / length + 0.0, y / length + 0.0, z / length + 0.0});
 }
 
-json exact_point_json(const Point3& p) {
+json exact_point_json(const RationalPoint3& p) {
   return json::array({rational_string(p.x()), rational_string(p.y()), rational_string(p.z())});
 }
 
+// the ring's points in the world, computed in rationals from the frame coordinates (no
+// lazy construction made for output).
 json ring_json(const Ring2& ring, const Face& face, bool exact) {
   json points = json::array();
-  for (const Point2& p : ring)
-    points.push_back(exact ? exact_point_json(face.frame.to_world(p))
-                           : point_json(face.frame.to_world(p)));
+  for (const Point2& p : ring) {
+    const RationalPoint3 world = face.frame.to_world(CGAL::exact(p));
+    points.push_back(exact ? exact_point_json(world) : point_json(world));
+  }
   return points;
 }
 
@@ -58,16 +69,16 @@ json region_json(const Region2& region, const Face& face, bool exact) {
 // the plane scaled to a unit normal, in doubles; exactly, scaled so that its largest
 // normal component has magnitude 1 (a canonical exact form).
 json plane_json(const Plane3& plane, bool exact) {
-  const double a = rounded(plane.a()), b = rounded(plane.b()), c = rounded(plane.c()),
-               d = rounded(plane.d());
+  if (exact) {
+    json coefficients = json::array();
+    for (const Rational& k : canonical_plane(plane)) coefficients.push_back(rational_string(k));
+    return coefficients;
+  }
+  const RationalPlane3& rational = CGAL::exact(plane);
+  const double a = rounded(rational.a()), b = rounded(rational.b()), c = rounded(rational.c()),
+               d = rounded(rational.d());
   const double length = std::sqrt(a * a + b * b + c * c);
-  if (!exact)
-    return json::array({a / length + 0.0, b / length + 0.0, c / length + 0.0, d / length + 0.0});
-  Exact scale = CGAL::abs(plane.a());
-  for (const Exact& k : {plane.b(), plane.c()})
-    if (CGAL::abs(k) > scale) scale = CGAL::abs(k);
-  return json::array({rational_string(plane.a() / scale), rational_string(plane.b() / scale),
-                      rational_string(plane.c() / scale), rational_string(plane.d() / scale)});
+  return json::array({a / length + 0.0, b / length + 0.0, c / length + 0.0, d / length + 0.0});
 }
 
 const char* kind_of(const Light& light) {
@@ -111,6 +122,12 @@ void format(std::string& out, const json& node, int depth) {
 
 }  // namespace
 
+// writes one member "key": value of an object at depth, as format() does.
+void format_member(std::string& out, const std::string& key, const json& value, int depth) {
+  out += std::string(static_cast<std::size_t>(depth) + 1, ' ') + json(key).dump() + ": ";
+  format(out, value, depth + 1);
+}
+
 std::string format_json(const json& document) {
   std::string out;
   format(out, document, 0);
@@ -118,12 +135,13 @@ std::string format_json(const json& document) {
 }
 
 double world_area(const Region2& region, const Face& face) {
-  const double uu = rounded(face.frame.u() * face.frame.u());
-  const double vv = rounded(face.frame.v() * face.frame.v());
+  const double uu = CGAL::to_double(face.frame.squared_u());
+  const double vv = CGAL::to_double(face.frame.squared_v());
   return rounded(region.area) * std::sqrt(uu * vv);
 }
 
-json shadow_json(const Scene& scene, const ShadowResult& result, const ShadowJsonOptions& options) {
+json shadow_header_json(const Scene& scene, const ShadowResult& result,
+                        const ShadowJsonOptions& options) {
   json document = {{"penumbra_shadows", 1}};
   json culling = {{"range_fraction", options.range_fraction},
                   {"full_scale_lux", options.full_scale_lux}};
@@ -146,77 +164,150 @@ json shadow_json(const Scene& scene, const ShadowResult& result, const ShadowJso
   }
   document["lights"] = std::move(lights);
 
-  json faces = json::array();
-  for (std::size_t r = 0; r < result.receivers.size(); ++r) {
-    const Object& object = scene.objects[result.receivers[r].object];
-    const Face& face = object.solid.faces()[result.receivers[r].face];
-    const Ring2 ring = face_ring(face);
-    json entry = {{"object", object.name},
-                  {"face", result.receivers[r].face},
-                  {"plane", plane_json(face.plane, false)},
-                  {"frame",
-                   {{"origin", point_json(face.frame.origin())},
-                    {"u", unit_json(face.frame.u())},
-                    {"v", unit_json(face.frame.v())}}},
-                  {"boundary", ring_json(ring, face, false)},
-                  {"area", world_area(convex_region(ring), face)}};
-    if (options.exact)
-      entry["exact"] = {{"plane", plane_json(face.plane, true)},
-                        {"boundary", ring_json(ring, face, true)}};
-    json per_light = json::array();
-    for (const LightShadows& shadows : result.lights) {
-      const FaceShadow& shadow = shadows.faces[r];
-      json item = {{"light", scene.lights[shadows.light].name},
-                   {"faces_away", shadow.faces_away},
-                   {"joint_occlusion", shadow.joint_occlusion}};
-      if (shadow.beyond_range) {
-        item["beyond_range"] = true;
-        per_light.push_back(std::move(item));
-        continue;
-      }
-      item["shadow"] = region_json(shadow.shadow, face, options.exact);
-      if (shadow.linear) {
-        item["source_clipped"] = shadow.source_clipped;
-        item["umbra"] = region_json(shadow.umbra, face, options.exact);
-        item["penumbra"] = region_json(shadow.penumbra, face, options.exact);
-      } else {
-        item["umbra"] = item["shadow"];
-        item["penumbra"] = {{"area", 0.0}, {"polygons", json::array()}};
-      }
-      item["lit"] = region_json(shadow.lit, face, options.exact);
-      json occluders = json::array();
-      for (const OccluderShadow& occluder : shadow.occluders) {
-        json o = {{"object", scene.objects[occluder.occluder].name},
-                  {"polygon", ring_json(occluder.polygon, face, false)},
-                  {"area", world_area(convex_region(occluder.polygon), face)}};
-        json exact;
-        if (options.exact) exact["polygon"] = ring_json(occluder.polygon, face, true);
-        if (occluder.linear_case) {
-          // Linear sources: the occluder's umbra, its App. A2 case, and the raw loops
-          // of section 4.1.2 (absent in the object-space case).
-          o["case"] = *occluder.linear_case == LinearCase::A ? "A" : "B";
-          o["object_space"] = occluder.object_space;
-          o["umbra"] = occluder.umbra ? ring_json(*occluder.umbra, face, false) : json::array();
-          o["penumbra_loop"] = ring_json(occluder.penumbra_loop, face, false);
-          o["umbra_loop"] = ring_json(occluder.umbra_loop, face, false);
-          if (options.exact) {
-            exact["umbra"] =
-                occluder.umbra ? ring_json(*occluder.umbra, face, true) : json::array();
-            exact["penumbra_loop"] = ring_json(occluder.penumbra_loop, face, true);
-            exact["umbra_loop"] = ring_json(occluder.umbra_loop, face, true);
-          }
-        }
-        if (options.exact) o["exact"] = std::move(exact);
-        occluders.push_back(std::move(o));
-      }
-      item["occluders"] = std::move(occluders);
+  return document;
+}
+
+json shadow_face_json(const Scene& scene, const ShadowResult& result, std::size_t r,
+                      const ShadowJsonOptions& options) {
+  const Object& object = scene.objects[result.receivers[r].object];
+  const Face& face = object.solid.faces()[result.receivers[r].face];
+  const Ring2 ring = face_ring(face);
+  json entry = {{"object", object.name},
+                {"face", result.receivers[r].face},
+                {"plane", plane_json(face.plane, false)},
+                {"frame",
+                 {{"origin", point_json(face.frame.origin())},
+                  {"u", unit_json(face.frame.u())},
+                  {"v", unit_json(face.frame.v())}}},
+                {"boundary", ring_json(ring, face, false)},
+                {"area", world_area(convex_region(ring), face)}};
+  if (options.exact)
+    entry["exact"] = {{"plane", plane_json(face.plane, true)},
+                      {"boundary", ring_json(ring, face, true)}};
+  json per_light = json::array();
+  for (const LightShadows& shadows : result.lights) {
+    const FaceShadow& shadow = shadows.faces[r];
+    json item = {{"light", scene.lights[shadows.light].name},
+                 {"faces_away", shadow.faces_away},
+                 {"joint_occlusion", shadow.joint_occlusion}};
+    if (shadow.beyond_range) {
+      item["beyond_range"] = true;
       per_light.push_back(std::move(item));
+      continue;
     }
-    entry["lights"] = std::move(per_light);
-    faces.push_back(std::move(entry));
+    item["shadow"] = region_json(shadow.shadow, face, options.exact);
+    if (shadow.linear) {
+      item["source_clipped"] = shadow.source_clipped;
+      item["umbra"] = region_json(shadow.umbra, face, options.exact);
+      item["penumbra"] = region_json(shadow.penumbra, face, options.exact);
+    } else {
+      item["umbra"] = item["shadow"];
+      item["penumbra"] = {{"area", 0.0}, {"polygons", json::array()}};
+    }
+    item["lit"] = region_json(shadow.lit, face, options.exact);
+    json occluders = json::array();
+    for (const OccluderShadow& occluder : shadow.occluders) {
+      json o = {{"object", scene.objects[occluder.occluder].name},
+                {"polygon", ring_json(occluder.polygon, face, false)},
+                {"area", world_area(convex_region(occluder.polygon), face)}};
+      json exact;
+      if (options.exact) exact["polygon"] = ring_json(occluder.polygon, face, true);
+      if (occluder.linear_case) {
+        // Linear sources: the occluder's umbra, its App. A2 case, and the raw loops
+        // of section 4.1.2 (absent in the object-space case).
+        o["case"] = *occluder.linear_case == LinearCase::A ? "A" : "B";
+        o["object_space"] = occluder.object_space;
+        o["umbra"] = occluder.umbra ? ring_json(*occluder.umbra, face, false) : json::array();
+        o["penumbra_loop"] = ring_json(occluder.penumbra_loop, face, false);
+        o["umbra_loop"] = ring_json(occluder.umbra_loop, face, false);
+        if (options.exact) {
+          exact["umbra"] = occluder.umbra ? ring_json(*occluder.umbra, face, true) : json::array();
+          exact["penumbra_loop"] = ring_json(occluder.penumbra_loop, face, true);
+          exact["umbra_loop"] = ring_json(occluder.umbra_loop, face, true);
+        }
+      }
+      if (options.exact) o["exact"] = std::move(exact);
+      occluders.push_back(std::move(o));
+    }
+    item["occluders"] = std::move(occluders);
+    per_light.push_back(std::move(item));
   }
+  entry["lights"] = std::move(per_light);
+  return entry;
+}
+
+json shadow_json(const Scene& scene, const ShadowResult& result, const ShadowJsonOptions& options) {
+  json document = shadow_header_json(scene, result, options);
+  json faces = json::array();
+  for (std::size_t r = 0; r < result.receivers.size(); ++r)
+    faces.push_back(shadow_face_json(scene, result, r, options));
   document["faces"] = std::move(faces);
   return document;
+}
+
+void stream_shadow_document(const Scene& scene, const ShadowResult& result,
+                            const ShadowJsonOptions& options,
+                            const std::vector<ShadowDocumentSink*>& sinks) {
+  const json header = shadow_header_json(scene, result, options);
+  const std::size_t count = result.receivers.size();
+  for (ShadowDocumentSink* sink : sinks) sink->begin(header, count);
+  // A block of faces at a time: built across threads, handed over in order.
+  constexpr std::size_t block = 2048;
+  std::vector<json> entries;
+  for (std::size_t first = 0; first < count; first += block) {
+    const std::size_t size = std::min(block, count - first);
+    entries.assign(size, json());
+    for_each_index(size, true, [&](std::size_t k) {
+      entries[k] = shadow_face_json(scene, result, first + k, options);
+    });
+    for (const json& entry : entries)
+      for (ShadowDocumentSink* sink : sinks) sink->face(entry);
+  }
+  for (ShadowDocumentSink* sink : sinks) sink->end();
+}
+
+void feed_shadow_document(ShadowDocumentSink& sink, const json& document) {
+  json header = document;
+  header.erase("faces");
+  const json& faces = document.at("faces");
+  sink.begin(header, faces.size());
+  for (const json& face : faces) sink.face(face);
+  sink.end();
+}
+
+// The document is an object whose keys sort as "culling" < "faces" < "lights" <
+// "penumbra_shadows" (nlohmann::json keeps them sorted): the members before "faces" are
+// written at begin(), the faces as they come, the rest at end().
+void ShadowJsonWriter::begin(const json& header, std::size_t faces) {
+  faces_ = faces;
+  std::string text = "{\n";
+  for (const auto& [key, value] : header.items()) {
+    if (key > "faces") {
+      after_faces_[key] = value;
+      continue;
+    }
+    format_member(text, key, value, 0);
+    text += ",\n";
+  }
+  text += " \"faces\": ";
+  text += faces == 0 ? "[]" : "[\n";
+  out_ << text;
+}
+
+void ShadowJsonWriter::face(const json& entry) {
+  std::string text = "  ";
+  format(text, entry, 2);
+  text += ++written_ < faces_ ? ",\n" : "\n ]";
+  out_ << text;
+}
+
+void ShadowJsonWriter::end() {
+  std::string text;
+  for (const auto& [key, value] : after_faces_.items()) {
+    text += ",\n";
+    format_member(text, key, value, 0);
+  }
+  out_ << text << "\n}\n";
 }
 
 }  // namespace penumbra::io

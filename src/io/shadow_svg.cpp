@@ -129,115 +129,137 @@ std::optional<SvgView> parse_svg_view(const std::string& name) {
   return std::nullopt;
 }
 
-void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
-                      const std::optional<Camera>& camera, bool loops) {
+struct ShadowSvgWriter::Drawing {
   std::vector<std::string> lights;
-  for (const auto& light : document.at("lights")) lights.push_back(light.at("name"));
-  const auto& faces = document.at("faces");
-  const double sheet_width = 900;
-  const double legend_height = 30 + 20.0 * static_cast<double>(lights.size() + 1);
+  double sheet_width = 900;
+  double legend_height = 0;
   double sheet_height = 700;
+  std::ostringstream body;  // the faces view's panels
+  int panels = 0;
+  Projection project;  // top and camera views
+  std::function<std::optional<double>(const json&)> depth_of;
+  std::vector<FaceDrawing> drawings;
+};
 
-  std::ostringstream body;
-  body << std::setprecision(6);
-  if (view == SvgView::faces) {
-    // One panel per face that some light reaches, drawn in the face's own frame.
-    const int columns = 4;
-    const double panel = sheet_width / columns;
-    int index = 0;
-    for (const auto& face : faces) {
-      bool reached = false;
-      for (const auto& light : face.at("lights"))
-        reached =
-            reached || (!light.at("faces_away").get<bool>() && !light.value("beyond_range", false));
-      if (!reached) continue;
-      const Vec3d origin = face.at("frame").at("origin").get<Vec3d>();
-      const Vec3d u = face.at("frame").at("u").get<Vec3d>(),
-                  v = face.at("frame").at("v").get<Vec3d>();
-      const Projection project = [&](const Vec3d& p) -> std::optional<Flat> {
-        return Flat{dot(p - origin, u), dot(p - origin, v)};
-      };
-      const double x0 = (index % columns) * panel, y0 = legend_height + (index / columns) * panel;
-      body << "<g>\n<text x=\"" << x0 + 10 << "\" y=\"" << y0 + 16
-           << "\" font-family=\"sans-serif\" font-size=\"12\">"
-           << escape_xml(face.at("object").get<std::string>()) << " face "
-           << face.at("face").get<int>() << "</text>\n";
-      if (auto drawing = draw_face(face, lights, project, 0, loops))
-        emit(body, {*drawing}, x0 + 10, y0 + 24, panel - 20, panel - 34, true);
-      body << "</g>\n";
-      ++index;
-    }
-    sheet_height = legend_height + std::ceil(index / double(columns)) * panel + 10;
-  } else {
-    std::vector<FaceDrawing> drawings;
-    Projection project;
-    std::function<std::optional<double>(const json&)> depth_of;
-    if (view == SvgView::top) {
-      // Plan view: faces turned up, lowest first.
-      project = [](const Vec3d& p) -> std::optional<Flat> { return Flat{p[0], p[1]}; };
-      depth_of = [](const json& face) -> std::optional<double> {
-        if (face.at("plane")[2].get<double>() <= 0) return std::nullopt;
-        double top = -INFINITY;
-        for (const auto& p : face.at("boundary")) top = std::max(top, p[2].get<double>());
-        return -top;
-      };
-    } else {
-      const CameraFrame frame(*camera);
-      const Vec3d eye = camera->eye;
-      const double focal = 0.5 * camera->height / frame.half_height();
-      project = [=](const Vec3d& p) -> std::optional<Flat> {
-        const auto [x, y, z] = frame.to_camera(p);
-        if (z <= 0) return std::nullopt;
-        return Flat{focal * x / z, focal * y / z};
-      };
-      // Faces turned toward the eye, farthest first (painter's order).
-      depth_of = [=](const json& face) -> std::optional<double> {
-        const auto& plane = face.at("plane");
-        const Vec3d normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
-        const Vec3d first = face.at("boundary")[0].get<Vec3d>();
-        if (dot(normal, eye - first) <= 0) return std::nullopt;
-        Vec3d centre{0, 0, 0};
-        for (const auto& p : face.at("boundary"))
-          for (int i = 0; i < 3; ++i)
-            centre[i] += p[i].get<double>() / static_cast<double>(face.at("boundary").size());
-        return length(centre - eye);
-      };
-    }
-    for (const auto& face : faces)
-      if (const auto depth = depth_of(face))
-        if (auto drawing = draw_face(face, lights, project, *depth, loops))
-          drawings.push_back(std::move(*drawing));
-    emit(body, std::move(drawings), 20, legend_height, sheet_width - 40,
-         sheet_height - legend_height - 20, true);
+ShadowSvgWriter::ShadowSvgWriter(std::ostream& out, SvgView view,
+                                 const std::optional<Camera>& camera, bool loops)
+    : out_(out), view_(view), camera_(camera), loops_(loops), drawing_(new Drawing) {}
+
+ShadowSvgWriter::~ShadowSvgWriter() = default;
+
+void ShadowSvgWriter::begin(const json& header, std::size_t) {
+  Drawing& d = *drawing_;
+  for (const auto& light : header.at("lights")) d.lights.push_back(light.at("name"));
+  d.legend_height = 30 + 20.0 * static_cast<double>(d.lights.size() + 1);
+  d.body << std::setprecision(6);
+  if (view_ == SvgView::top) {
+    // Plan view: faces turned up, lowest first.
+    d.project = [](const Vec3d& p) -> std::optional<Flat> { return Flat{p[0], p[1]}; };
+    d.depth_of = [](const json& face) -> std::optional<double> {
+      if (face.at("plane")[2].get<double>() <= 0) return std::nullopt;
+      double top = -INFINITY;
+      for (const auto& p : face.at("boundary")) top = std::max(top, p[2].get<double>());
+      return -top;
+    };
+  } else if (view_ == SvgView::camera) {
+    const CameraFrame frame(*camera_);
+    const Vec3d eye = camera_->eye;
+    const double focal = 0.5 * camera_->height / frame.half_height();
+    d.project = [=](const Vec3d& p) -> std::optional<Flat> {
+      const auto [x, y, z] = frame.to_camera(p);
+      if (z <= 0) return std::nullopt;
+      return Flat{focal * x / z, focal * y / z};
+    };
+    // Faces turned toward the eye, farthest first (painter's order).
+    d.depth_of = [=](const json& face) -> std::optional<double> {
+      const auto& plane = face.at("plane");
+      const Vec3d normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
+      const Vec3d first = face.at("boundary")[0].get<Vec3d>();
+      if (dot(normal, eye - first) <= 0) return std::nullopt;
+      Vec3d centre{0, 0, 0};
+      for (const auto& p : face.at("boundary"))
+        for (int i = 0; i < 3; ++i)
+          centre[i] += p[i].get<double>() / static_cast<double>(face.at("boundary").size());
+      return length(centre - eye);
+    };
   }
+}
 
-  out << std::setprecision(6);
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << sheet_width << "\" height=\""
-      << sheet_height << "\" viewBox=\"0 0 " << sheet_width << " " << sheet_height << "\">\n"
+void ShadowSvgWriter::face(const json& face) {
+  Drawing& d = *drawing_;
+  if (view_ != SvgView::faces) {
+    if (const auto depth = d.depth_of(face))
+      if (auto drawing = draw_face(face, d.lights, d.project, *depth, loops_))
+        d.drawings.push_back(std::move(*drawing));
+    return;
+  }
+  // One panel per face that some light reaches, drawn in the face's own frame.
+  bool reached = false;
+  for (const auto& light : face.at("lights"))
+    reached =
+        reached || (!light.at("faces_away").get<bool>() && !light.value("beyond_range", false));
+  if (!reached) return;
+  const int columns = 4;
+  const double panel = d.sheet_width / columns;
+  const Vec3d origin = face.at("frame").at("origin").get<Vec3d>();
+  const Vec3d u = face.at("frame").at("u").get<Vec3d>(), v = face.at("frame").at("v").get<Vec3d>();
+  const Projection project = [&](const Vec3d& p) -> std::optional<Flat> {
+    return Flat{dot(p - origin, u), dot(p - origin, v)};
+  };
+  const double x0 = (d.panels % columns) * panel,
+               y0 = d.legend_height + (d.panels / columns) * panel;
+  d.body << "<g>\n<text x=\"" << x0 + 10 << "\" y=\"" << y0 + 16
+         << "\" font-family=\"sans-serif\" font-size=\"12\">"
+         << escape_xml(face.at("object").get<std::string>()) << " face "
+         << face.at("face").get<int>() << "</text>\n";
+  if (auto drawing = draw_face(face, d.lights, project, 0, loops_))
+    emit(d.body, {*drawing}, x0 + 10, y0 + 24, panel - 20, panel - 34, true);
+  d.body << "</g>\n";
+  ++d.panels;
+}
+
+void ShadowSvgWriter::end() {
+  Drawing& d = *drawing_;
+  if (view_ == SvgView::faces)
+    d.sheet_height = d.legend_height + std::ceil(d.panels / 4.0) * (d.sheet_width / 4) + 10;
+  else
+    emit(d.body, std::move(d.drawings), 20, d.legend_height, d.sheet_width - 40,
+         d.sheet_height - d.legend_height - 20, true);
+
+  out_ << std::setprecision(6);
+  out_
+      << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << d.sheet_width << "\" height=\""
+      << d.sheet_height << "\" viewBox=\"0 0 " << d.sheet_width << " " << d.sheet_height << "\">\n"
       << "<title>penumbra shadows</title>\n"
       << "<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"5\" refY=\"5\" markerWidth=\"6\" "
          "markerHeight=\"6\" orient=\"auto\"><path d=\"M0 0 L10 5 L0 10 z\"/></marker></defs>\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   // Legend: one swatch per light, and the face fill.
-  out << "<g font-family=\"sans-serif\" font-size=\"13\">\n<text x=\"20\" y=\"20\">shadows ("
-      << (view == SvgView::top      ? "plan view"
-          : view == SvgView::camera ? "camera view"
-                                    : "per face")
-      << ")</text>\n";
+  out_ << "<g font-family=\"sans-serif\" font-size=\"13\">\n<text x=\"20\" y=\"20\">shadows ("
+       << (view_ == SvgView::top      ? "plan view"
+           : view_ == SvgView::camera ? "camera view"
+                                      : "per face")
+       << ")</text>\n";
   double y = 30;
-  out << "<rect x=\"20\" y=\"" << y
-      << "\" width=\"14\" height=\"14\" fill=\"#f4f4f4\" stroke=\"#333\"/>"
-      << "<text x=\"40\" y=\"" << y + 12 << "\">face</text>\n";
-  for (std::size_t k = 0; k < lights.size(); ++k) {
+  out_ << "<rect x=\"20\" y=\"" << y
+       << "\" width=\"14\" height=\"14\" fill=\"#f4f4f4\" stroke=\"#333\"/>"
+       << "<text x=\"40\" y=\"" << y + 12 << "\">face</text>\n";
+  for (std::size_t k = 0; k < d.lights.size(); ++k) {
     y += 20;
-    out << "<rect x=\"20\" y=\"" << y << "\" width=\"14\" height=\"14\" fill=\"" << palette[k % 6]
-        << "\" fill-opacity=\"0.55\"/><rect x=\"34\" y=\"" << y
-        << "\" width=\"14\" height=\"14\" fill=\"" << palette[k % 6]
-        << "\" fill-opacity=\"0.2\"/><text x=\"54\" y=\"" << y + 12 << "\">umbra and penumbra of "
-        << escape_xml(lights[k]) << "</text>\n";
+    out_ << "<rect x=\"20\" y=\"" << y << "\" width=\"14\" height=\"14\" fill=\"" << palette[k % 6]
+         << "\" fill-opacity=\"0.55\"/><rect x=\"34\" y=\"" << y
+         << "\" width=\"14\" height=\"14\" fill=\"" << palette[k % 6]
+         << "\" fill-opacity=\"0.2\"/><text x=\"54\" y=\"" << y + 12 << "\">umbra and penumbra of "
+         << escape_xml(d.lights[k]) << "</text>\n";
   }
-  out << "</g>\n" << body.str() << "</svg>\n";
+  out_ << "</g>\n" << d.body.str() << "</svg>\n";
+}
+
+void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
+                      const std::optional<Camera>& camera, bool loops) {
+  ShadowSvgWriter writer(out, view, camera, loops);
+  feed_shadow_document(writer, document);
 }
 
 }  // namespace penumbra::io

@@ -98,8 +98,8 @@ RenderedImage render(const RayTracer& tracer, const Camera& scene_camera,
   const int grid =
       options.anti_aliasing == AntiAliasing::fixed ? std::max(1, options.fixed_grid) : 1;
 
-  for_each_index(static_cast<std::size_t>(tiles.count()), true, [&](std::size_t index) {
-    const int tile = static_cast<int>(index);
+  for_each_index(static_cast<std::size_t>(tiles.count()), true, [&](std::size_t tile_index) {
+    const int tile = static_cast<int>(tile_index);
     RayCounts& counts = thread_counts.local();
     const int i_begin = (tile % tiles.columns) * kTile, j_begin = (tile / tiles.columns) * kTile;
     const SampleFunction sample = [&](double x, double y) { return sample_at(x, y, counts); };

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "penumbra/geometry/exact.h"
+
 namespace penumbra {
 namespace {
 
@@ -13,17 +15,22 @@ bool ring_less(const Ring2& a, const Ring2& b) {
   return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), point_less);
 }
 
+// returns twice the signed area of ring in rationals (the shoelace formula).
+Rational twice_signed_area(const Ring2& ring) {
+  Rational twice = 0;
+  const std::size_t n = ring.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const RationalPoint2& p = CGAL::exact(ring[k]);
+    const RationalPoint2& q = CGAL::exact(ring[(k + 1) % n]);
+    twice += p.x() * q.y() - q.x() * p.y();
+  }
+  return twice;
+}
+
 }  // namespace
 
 Exact signed_area(const Ring2& ring) {
-  Exact twice = 0;
-  const std::size_t n = ring.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Point2& p = ring[k];
-    const Point2& q = ring[(k + 1) % n];
-    twice += p.x() * q.y() - q.x() * p.y();
-  }
-  return twice / 2;
+  return exact_number(twice_signed_area(ring) / 2);
 }
 
 Ring2 canonical_ring(const Ring2& ring) {
@@ -53,11 +60,13 @@ Ring2 canonical_ring(const Ring2& ring) {
 
 Region2 canonical_region(std::vector<Polygon2> polygons) {
   Region2 region;
+  Rational twice_area = 0;  // in rationals: no chain of lazy sums
   for (Polygon2& polygon : polygons) {
     std::sort(polygon.holes.begin(), polygon.holes.end(), ring_less);
-    region.area += signed_area(polygon.outer);
-    for (const Ring2& hole : polygon.holes) region.area += signed_area(hole);
+    twice_area += twice_signed_area(polygon.outer);
+    for (const Ring2& hole : polygon.holes) twice_area += twice_signed_area(hole);
   }
+  region.area = exact_number(twice_area / 2);
   std::sort(polygons.begin(), polygons.end(),
             [](const Polygon2& a, const Polygon2& b) { return ring_less(a.outer, b.outer); });
   region.polygons = std::move(polygons);

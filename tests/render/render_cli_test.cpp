@@ -117,7 +117,7 @@ BOOST_AUTO_TEST_CASE(isolux_belts_paint_exactly_the_odd_bands_in_the_colour_of_t
   BOOST_TEST(painted[1] > 0u);  // 20-50 lx
   BOOST_TEST(painted[3] > 0u);  // 100-200 lx
   // The legend's swatches, highest level on top, in the colour of their level.
-  for (std::size_t k = 0; k < levels.size(); ++k)
+  for (unsigned k = 0; k < levels.size(); ++k)
     BOOST_TEST(close(belts.at(2, 1 + 7 * k + 2), expected_colour(levels[levels.size() - 1 - k])));
 }
 

@@ -6,6 +6,7 @@
 // edge, v = n x u. Frame coordinates (s, t) name the point o + s u + t v, so they
 // are exact rationals; outputs give the normalised axes in doubles.
 
+#include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/kernel.h"
 
 namespace penumbra {
@@ -14,26 +15,26 @@ class FaceFrame {
  public:
   FaceFrame() = default;
   // builds the frame at origin with first axis along u_direction, in the plane of normal.
-  FaceFrame(const Point3& origin, const Vector3& u_direction, const Vector3& normal)
-      : origin_(origin),
-        u_(u_direction),
-        v_(CGAL::cross_product(normal, u_direction)),
-        uu_(u_ * u_),
-        vv_(v_ * v_) {}
+  // The axes and their squared lengths are computed once in rationals.
+  FaceFrame(const Point3& origin, const Vector3& u_direction, const Vector3& normal);
 
   const Point3& origin() const { return origin_; }
   const Vector3& u() const { return u_; }
   const Vector3& v() const { return v_; }
+  // u . u and v . v, exactly.
+  const Rational& squared_u() const { return uu_; }
+  const Rational& squared_v() const { return vv_; }
 
   // returns the frame coordinates of a point of the plane (of any point: its
-  // orthogonal projection's coordinates).
-  Point2 to_frame(const Point3& p) const {
-    const Vector3 d = p - origin_;
-    return Point2((d * u_) / uu_, (d * v_) / vv_);
-  }
+  // orthogonal projection's coordinates), computed in rationals.
+  Point2 to_frame(const Point3& p) const;
 
-  // returns the world point with frame coordinates q.
-  Point3 to_world(const Point2& q) const { return origin_ + q.x() * u_ + q.y() * v_; }
+  // returns the world point with frame coordinates q, computed in rationals.
+  Point3 to_world(const Point2& q) const;
+
+  // the same on rational values (no Epeck object made).
+  RationalPoint2 to_frame(const RationalPoint3& p) const;
+  RationalPoint3 to_world(const RationalPoint2& q) const;
 
   // the unit axes, rounded to doubles, for output.
   Vec3d unit_u() const;
@@ -43,8 +44,8 @@ class FaceFrame {
   Point3 origin_;
   Vector3 u_;
   Vector3 v_;
-  Exact uu_;
-  Exact vv_;
+  Rational uu_;  // u . u
+  Rational vv_;  // v . v
 };
 
 }  // namespace penumbra

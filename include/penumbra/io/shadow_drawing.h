@@ -2,14 +2,19 @@
 // Drawings and tables of a shadow loops document (io/shadow_json.h) for CAD users:
 // an SVG sheet (plan view, camera view, or one panel per face), a DXF file of closed
 // LWPOLYLINEs on layers per light and kind, and a CSV of shaded area and percentage
-// per face and light. They read the document's double coordinates: output only.
+// per face and light. They read the document's double coordinates: output only. Each is a
+// ShadowDocumentSink, so that it can be written while the document streams; the functions
+// write a whole document.
 
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "penumbra/base/csv.h"
+#include "penumbra/io/shadow_json.h"
 #include "penumbra/scene/scene.h"
 
 namespace penumbra::io {
@@ -18,6 +23,53 @@ enum class SvgView { top, camera, faces };
 
 // parses "top", "camera" or "faces"; nullopt otherwise.
 std::optional<SvgView> parse_svg_view(const std::string& name);
+
+// The SVG sheet, face by face (the drawing is laid out when the faces are all in).
+class ShadowSvgWriter : public ShadowDocumentSink {
+ public:
+  // camera is needed by the camera view (precondition).
+  ShadowSvgWriter(std::ostream& out, SvgView view, const std::optional<Camera>& camera,
+                  bool loops = false);
+  ~ShadowSvgWriter() override;
+  void begin(const nlohmann::json& header, std::size_t faces) override;
+  void face(const nlohmann::json& entry) override;
+  void end() override;
+
+ private:
+  struct Drawing;
+  std::ostream& out_;
+  SvgView view_;
+  std::optional<Camera> camera_;
+  bool loops_;
+  std::unique_ptr<Drawing> drawing_;
+};
+
+// The DXF file, entity by entity.
+class ShadowDxfWriter : public ShadowDocumentSink {
+ public:
+  explicit ShadowDxfWriter(std::ostream& out);
+  ~ShadowDxfWriter() override;
+  void begin(const nlohmann::json& header, std::size_t faces) override;
+  void face(const nlohmann::json& entry) override;
+  void end() override;
+
+ private:
+  class Writer;
+  std::unique_ptr<Writer> writer_;
+};
+
+// The CSV table, row by row.
+class ShadowCsvWriter : public ShadowDocumentSink {
+ public:
+  explicit ShadowCsvWriter(std::ostream& out) : out_(out) {}
+  void begin(const nlohmann::json& header, std::size_t faces) override;
+  void face(const nlohmann::json& entry) override;
+  void end() override {}
+
+ private:
+  std::ostream& out_;
+  std::unique_ptr<CsvWriter> csv_;
+};
 
 // writes the SVG drawing of document: faces outlined, umbra (dark) and penumbra
 // (light) filled per light, a legend; with loops, the raw penumbra and umbra loops
