@@ -1,6 +1,7 @@
 // penumbra shadows SCENE: exact shadow polygons per face and light (Nishita 1985
 // sections 3.1-3.2) as JSON, with SVG, DXF and CSV outputs for CAD users.
 
+#include <chrono>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -35,7 +36,13 @@ struct ShadowsArguments {
 int run_shadows(const ShadowsArguments& arguments) {
   const auto view = io::parse_svg_view(arguments.view);
   if (!view) throw InputError("", "--view", "expected top, camera or faces");
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point from, Clock::time_point to) {
+    return std::chrono::duration<double>(to - from).count();
+  };
+  const auto started = Clock::now();
   const Scene scene = load_scene(arguments.scene);
+  const auto loaded = Clock::now();
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
   if (*view == io::SvgView::camera && !arguments.svg.empty() && !scene.camera)
@@ -47,6 +54,7 @@ int run_shadows(const ShadowsArguments& arguments) {
   options.full_scale_lux = arguments.full_scale_lux;
   if (arguments.range_lux > 0) options.range_lux = arguments.range_lux;
   const ShadowResult result = compute_shadows(scene, options);
+  const auto shaded = Clock::now();
   for (const std::string& warning : result.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
 
@@ -77,6 +85,7 @@ int run_shadows(const ShadowsArguments& arguments) {
   for (const auto& writer : writers) sinks.push_back(writer.get());
   io::stream_shadow_document(scene, result, json_options, sinks);
   for (const auto& finished : files) finished->commit();
+  const auto written = Clock::now();
 
   if (arguments.stats)
     for (const LightShadows& light : result.lights) {
@@ -88,6 +97,9 @@ int run_shadows(const ShadowsArguments& arguments) {
       std::cerr << "; pairs tested " << s.pairs_tested << " of " << s.pairs_possible << ", "
                 << s.pairs_shadowing << " with a shadow; " << s.seconds << " s\n";
     }
+  if (arguments.stats)
+    std::cerr << "time: load " << seconds(started, loaded) << " s, shadows "
+              << seconds(loaded, shaded) << " s, outputs " << seconds(shaded, written) << " s\n";
   return 0;
 }
 

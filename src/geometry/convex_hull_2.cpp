@@ -32,6 +32,18 @@ std::vector<int> convex_hull_2(const std::vector<Point2>& points) {
   return hull;
 }
 
+bool direction_less(const Vector3& a, const Vector3& b) {
+  {
+    const CGAL::Protect_FPU_rounding<true> upward;
+    try {
+      // Comparisons of overlapping intervals throw Uncertain_conversion_exception.
+      return direction_less(a.approx(), b.approx());
+    } catch (const CGAL::Uncertain_conversion_exception&) {
+    }
+  }
+  return direction_less(CGAL::exact(a), CGAL::exact(b));
+}
+
 Vector3 in_plane_direction(const Vector3& normal) {
   // Cross with the coordinate axis least aligned with the normal: never parallel.
   int axis = 0;

@@ -1,7 +1,11 @@
 #include "penumbra/geometry/convex_polyhedron.h"
 
+#include <CGAL/Mpzf.h>
+
 #include <algorithm>
+#include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -13,6 +17,73 @@ namespace {
 
 bool point_less(const Point3& a, const Point3& b) {
   return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
+}
+
+// returns the coordinates of the points when all are doubles (their intervals single
+// values), or nothing.
+std::optional<std::vector<std::array<double, 3>>> doubles_of(const std::vector<Point3>& points) {
+  std::vector<std::array<double, 3>> coordinates;
+  for (const Point3& p : points) {
+    const auto& approx = p.approx();
+    std::array<double, 3> x;
+    for (int i = 0; i < 3; ++i) {
+      if (!approx[i].is_point()) return std::nullopt;
+      x[i] = approx[i].inf();
+    }
+    coordinates.push_back(x);
+  }
+  return coordinates;
+}
+
+// fills face's plane, frame and ring from its cycle of points given as doubles, in dyadic
+// floating point (CGAL::Mpzf: sums and products of doubles are exact, with no gcd to
+// reduce), each value converted to rationals once. The values are those of the lazy
+// constructions (Plane_3 of the first three vertices, CGAL's formula; the frame of
+// face_frame.h), so every later decision is the same.
+void build_from_doubles(Face& face, const std::vector<std::array<double, 3>>& x) {
+  using Dyadic = CGAL::Mpzf;
+  const auto difference = [&](std::size_t k) {
+    return std::array<Dyadic, 3>{Dyadic(x[k][0]) - Dyadic(x[0][0]),
+                                 Dyadic(x[k][1]) - Dyadic(x[0][1]),
+                                 Dyadic(x[k][2]) - Dyadic(x[0][2])};
+  };
+  const auto cross = [](const std::array<Dyadic, 3>& a, const std::array<Dyadic, 3>& b) {
+    return std::array<Dyadic, 3>{a[1] * b[2] - b[1] * a[2], a[2] * b[0] - b[2] * a[0],
+                                 a[0] * b[1] - b[0] * a[1]};
+  };
+  const auto dot = [](const std::array<Dyadic, 3>& a, const std::array<Dyadic, 3>& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  };
+  const auto rational = [](const std::array<Dyadic, 3>& a) {
+    return RationalVector3(Rational(a[0]), Rational(a[1]), Rational(a[2]));
+  };
+  // Plane through p, q, r: (a, b, c) = (q - p) x (r - p), d = -(a, b, c).p.
+  const std::array<Dyadic, 3> u = difference(1), normal = cross(u, difference(2));
+  const Dyadic d =
+      -normal[0] * Dyadic(x[0][0]) - normal[1] * Dyadic(x[0][1]) - normal[2] * Dyadic(x[0][2]);
+  face.plane = from_exact<Plane3>(
+      RationalPlane3(Rational(normal[0]), Rational(normal[1]), Rational(normal[2]), Rational(d)));
+  // The frame: origin p, u = q - p, v = n x u.
+  const std::array<Dyadic, 3> v = cross(normal, u);
+  const Dyadic uu = dot(u, u), vv = dot(v, v);
+  const Rational uu_rational(uu), vv_rational(vv);
+  face.frame = FaceFrame(face.vertices[0], rational(u), rational(v), uu_rational, vv_rational);
+  // Frame coordinates s = (x - p).u / uu, t = (x - p).v / vv: numerators in dyadics.
+  std::vector<std::array<Dyadic, 2>> numerators;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const std::array<Dyadic, 3> offset = difference(k);
+    numerators.push_back({dot(offset, u), dot(offset, v)});
+    face.ring.push_back(from_exact<Point2>(RationalPoint2(
+        Rational(numerators[k][0]) / uu_rational, Rational(numerators[k][1]) / vv_rational)));
+  }
+  // The shoelace sum over the numerators, divided once: area = sum / (2 uu vv).
+  Dyadic twice = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    const auto& a = numerators[k];
+    const auto& b = numerators[(k + 1) % x.size()];
+    twice = twice + (a[0] * b[1] - b[0] * a[1]);
+  }
+  face.area = exact_number(Rational(twice) / (2 * uu_rational * vv_rational));
 }
 
 // rotates a cycle so that it starts at its lexicographically smallest point.
@@ -27,28 +98,35 @@ ConvexPolyhedron ConvexPolyhedron::from_faces(std::vector<std::vector<Point3>> f
   ConvexPolyhedron solid;
   solid.flat_ = flat;
   std::vector<Face> faces;
-  std::vector<RationalVector3> normals;
   for (auto& cycle : face_cycles) {
     start_at_smallest(cycle);
     solid.vertices_.insert(solid.vertices_.end(), cycle.begin(), cycle.end());
-    // Three consecutive vertices of a strictly convex counter-clockwise cycle give the
-    // outward orientation (Nishita eq. 3: F positive outside). The plane, its normal and
-    // the frame's first axis are computed once in rationals (the same coefficients as the
-    // lazy Plane_3 of the three points).
-    const RationalPoint3& p = CGAL::exact(cycle[0]);
-    const RationalPoint3& q = CGAL::exact(cycle[1]);
-    const RationalPlane3 plane(p, q, CGAL::exact(cycle[2]));
+    // Three consecutive vertices of a strictly convex counter-clockwise cycle give
+    // the outward orientation (Nishita eq. 3: F positive outside).
     Face face;
-    face.plane = from_exact<Plane3>(plane);
-    normals.push_back(plane.orthogonal_vector());
-    face.frame =
-        FaceFrame(cycle[0], from_exact<Vector3>(q - p), from_exact<Vector3>(normals.back()));
     face.vertices = std::move(cycle);
+    if (const auto coordinates = doubles_of(face.vertices)) {
+      build_from_doubles(face, *coordinates);
+    } else {
+      face.plane = Plane3(face.vertices[0], face.vertices[1], face.vertices[2]);
+      face.frame = FaceFrame(face.vertices[0], face.vertices[1] - face.vertices[0],
+                             face.plane.orthogonal_vector());
+      for (const Point3& p : face.vertices) face.ring.push_back(face.frame.to_frame(p));
+      Rational twice = 0;
+      for (std::size_t k = 0; k < face.ring.size(); ++k) {
+        const RationalPoint2& a = CGAL::exact(face.ring[k]);
+        const RationalPoint2& b = CGAL::exact(face.ring[(k + 1) % face.ring.size()]);
+        twice += a.x() * b.y() - b.x() * a.y();
+      }
+      face.area = exact_number(twice / 2);
+    }
     faces.push_back(std::move(face));
   }
   std::sort(solid.vertices_.begin(), solid.vertices_.end(), point_less);
   solid.vertices_.erase(std::unique(solid.vertices_.begin(), solid.vertices_.end()),
                         solid.vertices_.end());
+  std::vector<Vector3> normals;
+  for (const Face& face : faces) normals.push_back(face.normal());
   std::vector<std::size_t> order(faces.size());
   for (std::size_t f = 0; f < order.size(); ++f) order[f] = f;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {

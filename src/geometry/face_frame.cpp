@@ -14,17 +14,23 @@ Vec3d unit(const Vector3& v) {
 }  // namespace
 
 FaceFrame::FaceFrame(const Point3& origin, const Vector3& u_direction, const Vector3& normal)
-    : origin_(origin), u_(u_direction) {
-  const RationalVector3& u = CGAL::exact(u_direction);
-  const RationalVector3 v = CGAL::cross_product(CGAL::exact(normal), u);
-  uu_ = u.squared_length();
-  vv_ = v.squared_length();
-  v_ = from_exact<Vector3>(v);
-}
+    : origin_(origin),
+      u_(u_direction),
+      v_(CGAL::cross_product(normal, u_direction)),
+      uu_(u_.squared_length()),
+      vv_(v_.squared_length()) {}
+
+FaceFrame::FaceFrame(const Point3& origin, RationalVector3 u, RationalVector3 v, Rational uu,
+                     Rational vv)
+    : origin_(origin),
+      u_(from_exact<Vector3>(std::move(u))),
+      v_(from_exact<Vector3>(std::move(v))),
+      uu_(exact_number(std::move(uu))),
+      vv_(exact_number(std::move(vv))) {}
 
 RationalPoint2 FaceFrame::to_frame(const RationalPoint3& p) const {
   const RationalVector3 d = p - CGAL::exact(origin_);
-  return {(d * CGAL::exact(u_)) / uu_, (d * CGAL::exact(v_)) / vv_};
+  return {(d * CGAL::exact(u_)) / CGAL::exact(uu_), (d * CGAL::exact(v_)) / CGAL::exact(vv_)};
 }
 
 RationalPoint3 FaceFrame::to_world(const RationalPoint2& q) const {

@@ -11,40 +11,41 @@ void ShadowCsvWriter::begin(const nlohmann::json&, std::size_t) {
                                "umbra_area", "penumbra_area", "joint_occlusion"});
 }
 
-void ShadowCsvWriter::face(const nlohmann::json& face) {
+void ShadowCsvWriter::faces(const ShadowFaceBlock& block) {
   CsvWriter& csv = *csv_;
-  const double area = face.at("area");
-  for (const auto& light : face.at("lights")) {
-    const bool beyond = light.value("beyond_range", false);
-    csv.text(face.at("object")).integer(face.at("face").get<int>()).text(light.at("light"));
-    csv.number(area);
-    if (beyond) {
-      csv.blank().blank().blank();
-    } else {
-      const double shadow = light.at("shadow").at("area");
-      csv.number(shadow).number(light.at("lit").at("area").get<double>());
-      csv.number(area > 0 ? 100 * shadow / area : 0.0);
+  const Scene& scene = block.scene();
+  const ShadowResult& result = block.result();
+  for (std::size_t r = block.first(); r < block.first() + block.size(); ++r) {
+    const Object& object = scene.objects[result.receivers[r].object];
+    const Face& face = object.solid.faces()[result.receivers[r].face];
+    // The areas the JSON document gives (world_area of each region).
+    const double area = world_area(face_region(face), face);
+    for (const LightShadows& light : result.lights) {
+      const FaceShadow& shadow = light.faces[r];
+      csv.text(object.name).integer(static_cast<long long>(result.receivers[r].face));
+      csv.text(scene.lights[light.light].name).number(area);
+      if (shadow.beyond_range) {
+        csv.blank().blank().blank();
+      } else {
+        const double shadowed = world_area(shadow.shadow, face);
+        csv.number(shadowed).number(world_area(shadow.lit, face));
+        csv.number(area > 0 ? 100 * shadowed / area : 0.0);
+      }
+      csv.boolean(shadow.faces_away).boolean(shadow.beyond_range);
+      // Occluder names separated by spaces in one field.
+      std::string names;
+      for (const OccluderShadow& occluder : shadow.occluders)
+        names += (names.empty() ? "" : " ") + scene.objects[occluder.occluder].name;
+      csv.text(names);
+      if (shadow.beyond_range)
+        csv.blank().blank();
+      else
+        csv.number(world_area(shadow.linear ? shadow.umbra : shadow.shadow, face))
+            .number(shadow.linear ? world_area(shadow.penumbra, face) : 0.0);
+      csv.boolean(shadow.joint_occlusion);
+      csv.end_row();
     }
-    csv.boolean(light.at("faces_away").get<bool>()).boolean(beyond);
-    // Occluder names separated by spaces in one field.
-    std::string names;
-    if (!beyond)
-      for (const auto& occluder : light.at("occluders"))
-        names += (names.empty() ? "" : " ") + occluder.at("object").get<std::string>();
-    csv.text(names);
-    if (beyond)
-      csv.blank().blank();
-    else
-      csv.number(light.at("umbra").at("area").get<double>())
-          .number(light.at("penumbra").at("area").get<double>());
-    csv.boolean(light.value("joint_occlusion", false));
-    csv.end_row();
   }
-}
-
-void write_shadow_csv(std::ostream& out, const nlohmann::json& document) {
-  ShadowCsvWriter writer(out);
-  feed_shadow_document(writer, document);
 }
 
 }  // namespace penumbra::io

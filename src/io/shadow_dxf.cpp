@@ -114,30 +114,28 @@ void ShadowDxfWriter::begin(const nlohmann::json& header, std::size_t faces) {
   dxf.tag(2, "ENTITIES");
 }
 
-void ShadowDxfWriter::face(const nlohmann::json& face) {
+void ShadowDxfWriter::faces(const ShadowFaceBlock& block) {
   Writer& dxf = *writer_;
-  const auto& plane = face.at("plane");
-  const Vec3d normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
-  dxf.polyline("faces", face.at("boundary"), normal);
-  for (const auto& light : face.at("lights")) {
-    if (light.value("beyond_range", false)) continue;
-    const std::string name = light.at("light");
-    for (const char* kind : {"shadow", "umbra", "penumbra", "lit"})
-      for (const auto& polygon : light.at(kind).at("polygons")) {
-        dxf.polyline(name + "-" + kind, polygon.at("outer"), normal);
-        for (const auto& hole : polygon.at("holes")) dxf.polyline(name + "-" + kind, hole, normal);
-      }
+  for (const nlohmann::json& face : block.entries()) {
+    const auto& plane = face.at("plane");
+    const Vec3d normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
+    dxf.polyline("faces", face.at("boundary"), normal);
+    for (const auto& light : face.at("lights")) {
+      if (light.value("beyond_range", false)) continue;
+      const std::string name = light.at("light");
+      for (const char* kind : {"shadow", "umbra", "penumbra", "lit"})
+        for (const auto& polygon : light.at(kind).at("polygons")) {
+          dxf.polyline(name + "-" + kind, polygon.at("outer"), normal);
+          for (const auto& hole : polygon.at("holes"))
+            dxf.polyline(name + "-" + kind, hole, normal);
+        }
+    }
   }
 }
 
 void ShadowDxfWriter::end() {
   writer_->tag(0, "ENDSEC");
   writer_->tag(0, "EOF");
-}
-
-void write_shadow_dxf(std::ostream& out, const nlohmann::json& document) {
-  ShadowDxfWriter writer(out);
-  feed_shadow_document(writer, document);
 }
 
 }  // namespace penumbra::io

@@ -1,7 +1,9 @@
 #include "penumbra/io/shadow_json.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "json_emitter.h"
 #include "penumbra/base/parallel.h"
 #include "penumbra/io/rational.h"
 
@@ -20,65 +22,106 @@ double rounded(const Exact& x) {
   return rounded(x.exact());
 }
 
-json point_json(const RationalPoint3& p) {
-  return json::array({rounded(p.x()), rounded(p.y()), rounded(p.z())});
+void emit_point(JsonEmitter& out, const RationalPoint3& p) {
+  out.begin_array();
+  for (int i = 0; i < 3; ++i) out.number(rounded(p[i]));
+  out.end_array();
 }
-json point_json(const Point3& p) {
-  return point_json(CGAL::exact(p));
+void emit_point(JsonEmitter& out, const Point3& p) {
+  // A point given as doubles is its own rounding (most vertices of a scene are).
+  const auto& approx = p.approx();
+  if (!approx.x().is_point() || !approx.y().is_point() || !approx.z().is_point())
+    return emit_point(out, CGAL::exact(p));
+  out.begin_array();
+  for (int i = 0; i < 3; ++i) out.number(approx[i].inf() + 0.0);
+  out.end_array();
+}
+void emit_exact_point(JsonEmitter& out, const RationalPoint3& p) {
+  out.begin_array();
+  for (int i = 0; i < 3; ++i) out.string(rational_string(p[i]));
+  out.end_array();
 }
 
 // the unit vector along v, rounded from v's exact coordinates.
-json unit_json(const Vector3& v) {
+void emit_unit(JsonEmitter& out, const Vector3& v) {
   const RationalVector3& exact = CGAL::exact(v);
   const double x = rounded(exact.x()), y = rounded(exact.y()), z = rounded(exact.z());
   const double length = std::sqrt(x * x + y * y + z * z);
-  return json::array({x / length + 0.0, y / length + 0.0, z / length + 0.0});
+  out.begin_array();
+  for (double c : {x, y, z}) out.number(c / length + 0.0);
+  out.end_array();
 }
 
-json exact_point_json(const RationalPoint3& p) {
-  return json::array({rational_string(p.x()), rational_string(p.y()), rational_string(p.z())});
-}
-
-// the ring's points in the world, computed in rationals from the frame coordinates (no
-// lazy construction made for output).
-json ring_json(const Ring2& ring, const Face& face, bool exact) {
-  json points = json::array();
+// the ring's points in the world: a face vertex as it is, any other point computed in
+// rationals from its frame coordinates (no lazy construction made for output).
+void emit_ring(JsonEmitter& out, const Ring2& ring, const Face& face, bool exact) {
+  out.begin_array();
   for (const Point2& p : ring) {
+    const auto vertex = std::find_if(face.ring.begin(), face.ring.end(), [&](const Point2& q) {
+      return CGAL::identical(p, q) || p == q;
+    });
+    if (vertex != face.ring.end()) {
+      const Point3& world = face.vertices[static_cast<std::size_t>(vertex - face.ring.begin())];
+      if (exact)
+        emit_exact_point(out, CGAL::exact(world));
+      else
+        emit_point(out, world);
+      continue;
+    }
     const RationalPoint3 world = face.frame.to_world(CGAL::exact(p));
-    points.push_back(exact ? exact_point_json(world) : point_json(world));
+    if (exact)
+      emit_exact_point(out, world);
+    else
+      emit_point(out, world);
   }
-  return points;
+  out.end_array();
 }
 
-json region_json(const Region2& region, const Face& face, bool exact) {
-  json polygons = json::array();
+// a polygon's rings: {"holes": [...], "outer": [...]}.
+void emit_rings(JsonEmitter& out, const Polygon2& polygon, const Face& face, bool exact) {
+  out.key("holes");
+  out.begin_array();
+  for (const Ring2& hole : polygon.holes) emit_ring(out, hole, face, exact);
+  out.end_array();
+  out.key("outer");
+  emit_ring(out, polygon.outer, face, exact);
+}
+
+void emit_region(JsonEmitter& out, const Region2& region, const Face& face, bool exact) {
+  out.begin_object();
+  out.key("area");
+  out.number(world_area(region, face));
+  out.key("polygons");
+  out.begin_array();
   for (const Polygon2& polygon : region.polygons) {
-    json entry = {{"outer", ring_json(polygon.outer, face, false)}, {"holes", json::array()}};
-    for (const Ring2& hole : polygon.holes) entry["holes"].push_back(ring_json(hole, face, false));
+    out.begin_object();
     if (exact) {
-      json rationals = {{"outer", ring_json(polygon.outer, face, true)}, {"holes", json::array()}};
-      for (const Ring2& hole : polygon.holes)
-        rationals["holes"].push_back(ring_json(hole, face, true));
-      entry["exact"] = std::move(rationals);
+      out.key("exact");
+      out.begin_object();
+      emit_rings(out, polygon, face, true);
+      out.end_object();
     }
-    polygons.push_back(std::move(entry));
+    emit_rings(out, polygon, face, false);
+    out.end_object();
   }
-  return {{"area", world_area(region, face)}, {"polygons", std::move(polygons)}};
+  out.end_array();
+  out.end_object();
 }
 
 // the plane scaled to a unit normal, in doubles; exactly, scaled so that its largest
 // normal component has magnitude 1 (a canonical exact form).
-json plane_json(const Plane3& plane, bool exact) {
+void emit_plane(JsonEmitter& out, const Plane3& plane, bool exact) {
+  out.begin_array();
   if (exact) {
-    json coefficients = json::array();
-    for (const Rational& k : canonical_plane(plane)) coefficients.push_back(rational_string(k));
-    return coefficients;
+    for (const Rational& k : canonical_plane(plane)) out.string(rational_string(k));
+  } else {
+    const RationalPlane3& rational = CGAL::exact(plane);
+    const double a = rounded(rational.a()), b = rounded(rational.b()), c = rounded(rational.c()),
+                 d = rounded(rational.d());
+    const double length = std::sqrt(a * a + b * b + c * c);
+    for (double k : {a, b, c, d}) out.number(k / length + 0.0);
   }
-  const RationalPlane3& rational = CGAL::exact(plane);
-  const double a = rounded(rational.a()), b = rounded(rational.b()), c = rounded(rational.c()),
-               d = rounded(rational.d());
-  const double length = std::sqrt(a * a + b * b + c * c);
-  return json::array({a / length + 0.0, b / length + 0.0, c / length + 0.0, d / length + 0.0});
+  out.end_array();
 }
 
 const char* kind_of(const Light& light) {
@@ -135,8 +178,8 @@ std::string format_json(const json& document) {
 }
 
 double world_area(const Region2& region, const Face& face) {
-  const double uu = CGAL::to_double(face.frame.squared_u());
-  const double vv = CGAL::to_double(face.frame.squared_v());
+  const double uu = rounded(face.frame.squared_u());
+  const double vv = rounded(face.frame.squared_v());
   return rounded(region.area) * std::sqrt(uu * vv);
 }
 
@@ -167,73 +210,164 @@ json shadow_header_json(const Scene& scene, const ShadowResult& result,
   return document;
 }
 
-json shadow_face_json(const Scene& scene, const ShadowResult& result, std::size_t r,
-                      const ShadowJsonOptions& options) {
+namespace {
+
+// An occluder's entry; members in key order.
+void emit_occluder(JsonEmitter& out, const Scene& scene, const OccluderShadow& occluder,
+                   const Face& face, bool exact) {
+  out.begin_object();
+  out.key("area");
+  out.number(world_area(convex_region(occluder.polygon), face));
+  const bool linear = occluder.linear_case.has_value();
+  if (linear) {
+    out.key("case");
+    out.string(*occluder.linear_case == LinearCase::A ? "A" : "B");
+  }
+  // Linear sources: the occluder's umbra, its App. A2 case, and the raw loops of section
+  // 4.1.2 (absent in the object-space case).
+  const auto emit_umbra = [&](bool rationals) {
+    if (occluder.umbra) {
+      emit_ring(out, *occluder.umbra, face, rationals);
+    } else {
+      out.begin_array();
+      out.end_array();
+    }
+  };
+  if (exact) {
+    out.key("exact");
+    out.begin_object();
+    if (linear) {
+      out.key("penumbra_loop");
+      emit_ring(out, occluder.penumbra_loop, face, true);
+    }
+    out.key("polygon");
+    emit_ring(out, occluder.polygon, face, true);
+    if (linear) {
+      out.key("umbra");
+      emit_umbra(true);
+      out.key("umbra_loop");
+      emit_ring(out, occluder.umbra_loop, face, true);
+    }
+    out.end_object();
+  }
+  out.key("object");
+  out.string(scene.objects[occluder.occluder].name);
+  if (linear) {
+    out.key("object_space");
+    out.boolean(occluder.object_space);
+    out.key("penumbra_loop");
+    emit_ring(out, occluder.penumbra_loop, face, false);
+  }
+  out.key("polygon");
+  emit_ring(out, occluder.polygon, face, false);
+  if (linear) {
+    out.key("umbra");
+    emit_umbra(false);
+    out.key("umbra_loop");
+    emit_ring(out, occluder.umbra_loop, face, false);
+  }
+  out.end_object();
+}
+
+// A light's entry for one face; members in key order.
+void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& shadow,
+                const Scene& scene, const Face& face, bool exact) {
+  out.begin_object();
+  if (shadow.beyond_range) {
+    out.key("beyond_range");
+    out.boolean(true);
+  }
+  out.key("faces_away");
+  out.boolean(shadow.faces_away);
+  out.key("joint_occlusion");
+  out.boolean(shadow.joint_occlusion);
+  out.key("light");
+  out.string(name);
+  if (shadow.beyond_range) {
+    out.end_object();
+    return;
+  }
+  out.key("lit");
+  emit_region(out, shadow.lit, face, exact);
+  out.key("occluders");
+  out.begin_array();
+  for (const OccluderShadow& occluder : shadow.occluders)
+    emit_occluder(out, scene, occluder, face, exact);
+  out.end_array();
+  out.key("penumbra");
+  if (shadow.linear) {
+    emit_region(out, shadow.penumbra, face, exact);
+  } else {  // point and directional sources: no penumbra
+    emit_region(out, Region2{}, face, false);
+  }
+  out.key("shadow");
+  emit_region(out, shadow.shadow, face, exact);
+  if (shadow.linear) {
+    out.key("source_clipped");
+    out.boolean(shadow.source_clipped);
+  }
+  out.key("umbra");
+  emit_region(out, shadow.linear ? shadow.umbra : shadow.shadow, face, exact);
+  out.end_object();
+}
+
+// The entry of "faces" for receiver r; members in key order.
+void emit_face(JsonEmitter& out, const Scene& scene, const ShadowResult& result, std::size_t r,
+               const ShadowJsonOptions& options) {
   const Object& object = scene.objects[result.receivers[r].object];
   const Face& face = object.solid.faces()[result.receivers[r].face];
-  const Ring2 ring = face_ring(face);
-  json entry = {{"object", object.name},
-                {"face", result.receivers[r].face},
-                {"plane", plane_json(face.plane, false)},
-                {"frame",
-                 {{"origin", point_json(face.frame.origin())},
-                  {"u", unit_json(face.frame.u())},
-                  {"v", unit_json(face.frame.v())}}},
-                {"boundary", ring_json(ring, face, false)},
-                {"area", world_area(convex_region(ring), face)}};
-  if (options.exact)
-    entry["exact"] = {{"plane", plane_json(face.plane, true)},
-                      {"boundary", ring_json(ring, face, true)}};
-  json per_light = json::array();
-  for (const LightShadows& shadows : result.lights) {
-    const FaceShadow& shadow = shadows.faces[r];
-    json item = {{"light", scene.lights[shadows.light].name},
-                 {"faces_away", shadow.faces_away},
-                 {"joint_occlusion", shadow.joint_occlusion}};
-    if (shadow.beyond_range) {
-      item["beyond_range"] = true;
-      per_light.push_back(std::move(item));
-      continue;
-    }
-    item["shadow"] = region_json(shadow.shadow, face, options.exact);
-    if (shadow.linear) {
-      item["source_clipped"] = shadow.source_clipped;
-      item["umbra"] = region_json(shadow.umbra, face, options.exact);
-      item["penumbra"] = region_json(shadow.penumbra, face, options.exact);
-    } else {
-      item["umbra"] = item["shadow"];
-      item["penumbra"] = {{"area", 0.0}, {"polygons", json::array()}};
-    }
-    item["lit"] = region_json(shadow.lit, face, options.exact);
-    json occluders = json::array();
-    for (const OccluderShadow& occluder : shadow.occluders) {
-      json o = {{"object", scene.objects[occluder.occluder].name},
-                {"polygon", ring_json(occluder.polygon, face, false)},
-                {"area", world_area(convex_region(occluder.polygon), face)}};
-      json exact;
-      if (options.exact) exact["polygon"] = ring_json(occluder.polygon, face, true);
-      if (occluder.linear_case) {
-        // Linear sources: the occluder's umbra, its App. A2 case, and the raw loops
-        // of section 4.1.2 (absent in the object-space case).
-        o["case"] = *occluder.linear_case == LinearCase::A ? "A" : "B";
-        o["object_space"] = occluder.object_space;
-        o["umbra"] = occluder.umbra ? ring_json(*occluder.umbra, face, false) : json::array();
-        o["penumbra_loop"] = ring_json(occluder.penumbra_loop, face, false);
-        o["umbra_loop"] = ring_json(occluder.umbra_loop, face, false);
-        if (options.exact) {
-          exact["umbra"] = occluder.umbra ? ring_json(*occluder.umbra, face, true) : json::array();
-          exact["penumbra_loop"] = ring_json(occluder.penumbra_loop, face, true);
-          exact["umbra_loop"] = ring_json(occluder.umbra_loop, face, true);
-        }
-      }
-      if (options.exact) o["exact"] = std::move(exact);
-      occluders.push_back(std::move(o));
-    }
-    item["occluders"] = std::move(occluders);
-    per_light.push_back(std::move(item));
+  out.begin_object();
+  out.key("area");
+  out.number(world_area(face_region(face), face));
+  out.key("boundary");
+  emit_ring(out, face.ring, face, false);
+  if (options.exact) {
+    out.key("exact");
+    out.begin_object();
+    out.key("boundary");
+    emit_ring(out, face.ring, face, true);
+    out.key("plane");
+    emit_plane(out, face.plane, true);
+    out.end_object();
   }
-  entry["lights"] = std::move(per_light);
-  return entry;
+  out.key("face");
+  out.integer(result.receivers[r].face);
+  out.key("frame");
+  out.begin_object();
+  out.key("origin");
+  emit_point(out, face.frame.origin());
+  out.key("u");
+  emit_unit(out, face.frame.u());
+  out.key("v");
+  emit_unit(out, face.frame.v());
+  out.end_object();
+  out.key("lights");
+  out.begin_array();
+  for (const LightShadows& shadows : result.lights)
+    emit_light(out, scene.lights[shadows.light].name, shadows.faces[r], scene, face, options.exact);
+  out.end_array();
+  out.key("object");
+  out.string(object.name);
+  out.key("plane");
+  emit_plane(out, face.plane, false);
+  out.end_object();
+}
+
+}  // namespace
+
+json shadow_face_json(const Scene& scene, const ShadowResult& result, std::size_t r,
+                      const ShadowJsonOptions& options) {
+  TreeEmitter tree;
+  emit_face(tree, scene, result, r, options);
+  return std::move(tree.result());
+}
+
+std::string shadow_face_text(const Scene& scene, const ShadowResult& result, std::size_t r,
+                             const ShadowJsonOptions& options, int depth) {
+  std::string text;
+  TextEmitter emitter(text, depth);
+  emit_face(emitter, scene, result, r, options);
+  return text;
 }
 
 json shadow_json(const Scene& scene, const ShadowResult& result, const ShadowJsonOptions& options) {
@@ -245,34 +379,38 @@ json shadow_json(const Scene& scene, const ShadowResult& result, const ShadowJso
   return document;
 }
 
+const std::vector<json>& ShadowFaceBlock::entries() const {
+  if (!entries_) {
+    entries_.emplace(size_);
+    for_each_index(size_, true, [&](std::size_t k) {
+      (*entries_)[k] = shadow_face_json(scene_, result_, first_ + k, options_);
+    });
+  }
+  return *entries_;
+}
+
+const std::vector<std::string>& ShadowFaceBlock::texts() const {
+  if (!texts_) {
+    texts_.emplace(size_);
+    for_each_index(size_, true, [&](std::size_t k) {
+      (*texts_)[k] = shadow_face_text(scene_, result_, first_ + k, options_, 2);
+    });
+  }
+  return *texts_;
+}
+
 void stream_shadow_document(const Scene& scene, const ShadowResult& result,
                             const ShadowJsonOptions& options,
                             const std::vector<ShadowDocumentSink*>& sinks) {
   const json header = shadow_header_json(scene, result, options);
   const std::size_t count = result.receivers.size();
   for (ShadowDocumentSink* sink : sinks) sink->begin(header, count);
-  // A block of faces at a time: built across threads, handed over in order.
   constexpr std::size_t block = 2048;
-  std::vector<json> entries;
   for (std::size_t first = 0; first < count; first += block) {
-    const std::size_t size = std::min(block, count - first);
-    entries.assign(size, json());
-    for_each_index(size, true, [&](std::size_t k) {
-      entries[k] = shadow_face_json(scene, result, first + k, options);
-    });
-    for (const json& entry : entries)
-      for (ShadowDocumentSink* sink : sinks) sink->face(entry);
+    const ShadowFaceBlock faces(scene, result, options, first, std::min(block, count - first));
+    for (ShadowDocumentSink* sink : sinks) sink->faces(faces);
   }
   for (ShadowDocumentSink* sink : sinks) sink->end();
-}
-
-void feed_shadow_document(ShadowDocumentSink& sink, const json& document) {
-  json header = document;
-  header.erase("faces");
-  const json& faces = document.at("faces");
-  sink.begin(header, faces.size());
-  for (const json& face : faces) sink.face(face);
-  sink.end();
 }
 
 // The document is an object whose keys sort as "culling" < "faces" < "lights" <
@@ -294,11 +432,9 @@ void ShadowJsonWriter::begin(const json& header, std::size_t faces) {
   out_ << text;
 }
 
-void ShadowJsonWriter::face(const json& entry) {
-  std::string text = "  ";
-  format(text, entry, 2);
-  text += ++written_ < faces_ ? ",\n" : "\n ]";
-  out_ << text;
+void ShadowJsonWriter::faces(const ShadowFaceBlock& block) {
+  for (const std::string& text : block.texts())
+    out_ << "  " << text << (++written_ < faces_ ? ",\n" : "\n ]");
 }
 
 void ShadowJsonWriter::end() {

@@ -185,6 +185,10 @@ void ShadowSvgWriter::begin(const json& header, std::size_t) {
   }
 }
 
+void ShadowSvgWriter::faces(const ShadowFaceBlock& block) {
+  for (const json& entry : block.entries()) face(entry);
+}
+
 void ShadowSvgWriter::face(const json& face) {
   Drawing& d = *drawing_;
   if (view_ != SvgView::faces) {
@@ -254,12 +258,6 @@ void ShadowSvgWriter::end() {
          << escape_xml(d.lights[k]) << "</text>\n";
   }
   out_ << "</g>\n" << d.body.str() << "</svg>\n";
-}
-
-void write_shadow_svg(std::ostream& out, const json& document, SvgView view,
-                      const std::optional<Camera>& camera, bool loops) {
-  ShadowSvgWriter writer(out, view, camera, loops);
-  feed_shadow_document(writer, document);
 }
 
 }  // namespace penumbra::io

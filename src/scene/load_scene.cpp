@@ -1,12 +1,15 @@
 #include "penumbra/scene/load_scene.h"
 
 #include <cmath>
+#include <exception>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <sstream>
 
 #include "json_cursor.h"
 #include "penumbra/base/input_error.h"
+#include "penumbra/base/parallel.h"
 #include "penumbra/geometry/geometry_error.h"
 #include "penumbra/scene/mesh_file.h"
 #include "sphere_points.h"
@@ -72,14 +75,51 @@ class SceneReader {
     if (const auto materials = root.find("materials"))
       for (const auto& [name, cursor] : materials->members()) read_material(name, cursor);
 
-    if (const auto objects = root.find("objects"))
-      for (const JsonCursor& object : objects->elements()) read_object(object);
+    if (const auto objects = root.find("objects")) read_objects(*objects);
     if (const auto lights = root.find("lights"))
       for (const JsonCursor& light : lights->elements()) read_light(light);
     if (const auto camera = root.find("camera")) read_camera(*camera);
   }
 
  private:
+  // A solid to build once every object has been read: the object it belongs to and the
+  // construction (which throws InputError naming the object's JSON path).
+  struct PendingSolid {
+    std::size_t object;
+    std::function<ConvexPolyhedron()> build;
+  };
+
+  // reads the objects, building their solids in parallel (a hull per object is the bulk
+  // of loading a large scene). The error reported is the first in document order, as a
+  // serial reading would find it: a reading error ends the reading, and is reported only
+  // if no solid before it fails.
+  void read_objects(const JsonCursor& objects) {
+    std::exception_ptr reading_error;
+    try {
+      for (const JsonCursor& object : objects.elements()) read_object(object);
+    } catch (const InputError&) {
+      reading_error = std::current_exception();
+    }
+    std::vector<std::exception_ptr> errors(pending_.size());
+    for_each_index(pending_.size(), true, [&](std::size_t k) {
+      try {
+        scene_.objects[pending_[k].object].solid = pending_[k].build();
+      } catch (const InputError&) {
+        errors[k] = std::current_exception();
+      }
+    });
+    for (const std::exception_ptr& error : errors)
+      if (error) std::rethrow_exception(error);
+    if (reading_error) std::rethrow_exception(reading_error);
+    pending_.clear();
+  }
+
+  // defers the construction of the solid of the object being read (the next in
+  // scene_.objects).
+  void defer(std::function<ConvexPolyhedron()> build) {
+    pending_.push_back({scene_.objects.size(), std::move(build)});
+  }
+
   void read_material(const std::string& name, const JsonCursor& cursor) {
     cursor.require_object();
     cursor.warn_unknown_keys({"reflectance", "color", "specular", "shininess", "reflect",
@@ -149,17 +189,22 @@ class SceneReader {
       const Vec3d high = shape.at("max").vec3();
       for (int i = 0; i < 3; ++i)
         if (!(low[i] < high[i])) shape.at("max").fail("each coordinate of max must exceed min");
-      std::vector<Point3> corners;
-      for (int k = 0; k < 8; ++k)
-        corners.push_back(Point3((k & 1) ? high[0] : low[0], (k & 2) ? high[1] : low[1],
-                                 (k & 4) ? high[2] : low[2]));
-      object.solid = ConvexPolyhedron::hull(corners);
+      defer([low, high] {
+        std::vector<Point3> corners;
+        for (int k = 0; k < 8; ++k)
+          corners.push_back(Point3((k & 1) ? high[0] : low[0], (k & 2) ? high[1] : low[1],
+                                   (k & 4) ? high[2] : low[2]));
+        return ConvexPolyhedron::hull(corners);
+      });
     } else if (kind == "convex") {
-      const auto points = exact_points(shape.points(4));
-      object.solid = build_solid(shape, [&] { return ConvexPolyhedron::hull(points); });
+      defer([shape, points = shape.points(4)] {
+        return build_solid(shape, [&] { return ConvexPolyhedron::hull(exact_points(points)); });
+      });
     } else if (kind == "polygon") {
-      const auto points = exact_points(shape.points(3));
-      object.solid = build_solid(shape, [&] { return ConvexPolyhedron::flat_polygon(points); });
+      defer([shape, points = shape.points(3)] {
+        return build_solid(shape,
+                           [&] { return ConvexPolyhedron::flat_polygon(exact_points(points)); });
+      });
     } else if (kind == "sphere") {
       shape.require_object();
       shape.warn_unknown_keys({"center", "radius", "segments"});
@@ -169,8 +214,10 @@ class SceneReader {
         sphere.segments = s->positive_integer();
         if (sphere.segments < 4) s->fail("a sphere needs at least 4 segments");
       }
-      object.solid = ConvexPolyhedron::hull(
-          exact_points(detail::sphere_points(sphere.center, sphere.radius, sphere.segments)));
+      defer([sphere] {
+        return ConvexPolyhedron::hull(
+            exact_points(detail::sphere_points(sphere.center, sphere.radius, sphere.segments)));
+      });
       object.sphere = sphere;
     } else {
       read_mesh_object(shape, std::move(object));
@@ -300,6 +347,7 @@ class SceneReader {
 
   Scene& scene_;
   std::string file_;
+  std::vector<PendingSolid> pending_;
   std::set<std::string> object_names_;
   std::set<std::string> light_names_;
 };

@@ -1,10 +1,17 @@
 #include "region_set.h"
 
+#include <CGAL/box_intersection_d.h>
+
+#include <algorithm>
 #include <iterator>
+#include <numeric>
 
 #include <CGAL/Polygon_set_2.h>
 
+#include "convex_difference.h"
+#include "exact_compare.h"
 #include "half_plane.h"
+#include "penumbra/base/parallel.h"
 
 namespace penumbra::detail {
 namespace {
@@ -47,12 +54,164 @@ Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& s
   return region_of(set);
 }
 
-std::pair<Region2, Region2> unite_and_complement(const std::vector<Ring2>& rings,
-                                                 const Ring2& window) {
-  const PolygonSet shadow = join(rings);
-  PolygonSet rest = join({window});
-  rest.difference(shadow);
-  return {rings.size() == 1 ? convex_region(rings.front()) : region_of(shadow), region_of(rest)};
+std::vector<std::vector<std::size_t>> touching_groups(const std::vector<Ring2>& rings) {
+  // Union-find over the pairs whose boxes (rounded outward) meet and whose closures meet.
+  std::vector<std::size_t> parent(rings.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](std::size_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t,
+                                                          CGAL::Box_intersection_d::ID_EXPLICIT>;
+  std::vector<Box> boxes;
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    CGAL::Bbox_2 box;
+    for (const Point2& p : rings[k]) box += p.bbox();
+    boxes.emplace_back(box, k);
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> candidates;
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+    candidates.emplace_back(a.handle(), b.handle());
+  });
+  std::vector<char> touching(candidates.size());
+  for_each_index(candidates.size(), true, [&](std::size_t k) {
+    touching[k] = !strictly_apart(rings[candidates[k].first], rings[candidates[k].second]);
+  });
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+    if (touching[k]) parent[root(candidates[k].first)] = root(candidates[k].second);
+  std::vector<std::vector<std::size_t>> groups;
+  std::vector<long> group_of(rings.size(), -1);
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    long& group = group_of[root(k)];
+    if (group < 0) {
+      group = static_cast<long>(groups.size());
+      groups.emplace_back();
+    }
+    groups[static_cast<std::size_t>(group)].push_back(k);
+  }
+  return groups;
+}
+
+namespace {
+
+// A lit face being assembled: its outer boundary (counter-clockwise) and its holes.
+struct LitFace {
+  Polygon outer;
+  std::vector<Polygon> holes;
+  Exact area;  // of outer, to find the innermost face holding a point
+};
+
+// returns true when point is strictly inside polygon (it is never on its boundary here).
+bool inside(const Polygon& polygon, const Point2& point) {
+  return CGAL::bounded_side_2(polygon.vertices_begin(), polygon.vertices_end(), point) ==
+         CGAL::ON_BOUNDED_SIDE;
+}
+
+// returns true when some vertex of polygon lies on the boundary of the convex window.
+bool touches(const Polygon& polygon, const Ring2& window) {
+  for (std::size_t k = 0; k < window.size(); ++k)
+    for (auto v = polygon.vertices_begin(); v != polygon.vertices_end(); ++v)
+      if (orientation_sign(window[k], window[(k + 1) % window.size()], *v) == CGAL::ZERO)
+        return true;
+  return false;
+}
+
+}  // namespace
+
+std::pair<Region2, Region2> unite_and_complement(
+    const std::vector<Ring2>& rings, const std::vector<std::vector<std::size_t>>& groups,
+    const Ring2& window) {
+  // Each group's union on its own: groups are strictly apart, so their pieces are the
+  // faces the union of all rings has.
+  std::vector<std::vector<PolygonWithHoles>> pieces(groups.size());
+  for_each_index(groups.size(), true, [&](std::size_t g) {
+    if (groups[g].size() == 1) {
+      const Ring2& ring = rings[groups[g].front()];
+      pieces[g].emplace_back(Polygon(ring.begin(), ring.end()));
+      return;
+    }
+    std::vector<Ring2> members;
+    for (std::size_t k : groups[g]) members.push_back(rings[k]);
+    join(members).polygons_with_holes(std::back_inserter(pieces[g]));
+  });
+  std::vector<PolygonWithHoles> all;
+  for (auto& group : pieces)
+    for (auto& piece : group) all.push_back(std::move(piece));
+
+  // The lit part: the window less the pieces that touch its boundary (a Boolean
+  // difference), whose faces and the pieces' holes are the faces the other pieces may
+  // lie in; each other piece is a hole of the innermost face holding one of its vertices.
+  std::vector<LitFace> faces;
+  std::vector<const PolygonWithHoles*> inner;
+  {
+    PolygonSet rest;
+    rest.insert(Polygon(window.begin(), window.end()));
+    std::vector<PolygonWithHoles> touching;
+    for (const PolygonWithHoles& piece : all)
+      if (touches(piece.outer_boundary(), window))
+        touching.push_back(piece);
+      else
+        inner.push_back(&piece);
+    if (!touching.empty()) {
+      PolygonSet removed;
+      removed.join(touching.begin(), touching.end());
+      rest.difference(removed);
+    }
+    std::vector<PolygonWithHoles> parts;
+    rest.polygons_with_holes(std::back_inserter(parts));
+    for (PolygonWithHoles& part : parts)
+      faces.push_back({part.outer_boundary(),
+                       std::vector<Polygon>(part.holes_begin(), part.holes_end()), Exact()});
+    for (const PolygonWithHoles* piece : inner)
+      for (auto hole = piece->holes_begin(); hole != piece->holes_end(); ++hole) {
+        Polygon outer = *hole;
+        outer.reverse_orientation();
+        faces.push_back({std::move(outer), {}, Exact()});
+      }
+  }
+  for_each_index(faces.size(), true, [&](std::size_t f) {
+    faces[f].area =
+        signed_area(Ring2(faces[f].outer.vertices_begin(), faces[f].outer.vertices_end()));
+  });
+  // Point location by boxes, then exactly; nested candidates: the smallest holds it.
+  std::vector<CGAL::Bbox_2> face_boxes;
+  for (const LitFace& face : faces) face_boxes.push_back(face.outer.bbox());
+  std::vector<long> home(inner.size(), -1);
+  for_each_index(inner.size(), true, [&](std::size_t p) {
+    const Point2& probe = *inner[p]->outer_boundary().vertices_begin();
+    const CGAL::Bbox_2 at = probe.bbox();
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      if (CGAL::do_overlap(face_boxes[f], at) && inside(faces[f].outer, probe) &&
+          (home[p] < 0 || faces[f].area < faces[static_cast<std::size_t>(home[p])].area))
+        home[p] = static_cast<long>(f);
+  });
+  if (std::find(home.begin(), home.end(), -1) != home.end()) {
+    // No face holds a piece (cannot happen for pieces strictly inside the window): the
+    // Boolean difference of everything decides instead.
+    PolygonSet rest = join({window});
+    rest.difference(join(rings));
+    return {rings.size() == 1 ? convex_region(rings.front()) : region_of(join(rings)),
+            region_of(rest)};
+  }
+  for (std::size_t p = 0; p < inner.size(); ++p) {
+    Polygon hole = inner[p]->outer_boundary();
+    hole.reverse_orientation();
+    faces[static_cast<std::size_t>(home[p])].holes.push_back(std::move(hole));
+  }
+
+  const auto canonical = [](const std::vector<PolygonWithHoles>& parts) {
+    std::vector<Polygon2> polygons(parts.size());
+    for_each_index(parts.size(), true, [&](std::size_t k) {
+      polygons[k].outer = to_ring(parts[k].outer_boundary());
+      for (auto hole = parts[k].holes_begin(); hole != parts[k].holes_end(); ++hole)
+        polygons[k].holes.push_back(to_ring(*hole));
+    });
+    return canonical_region(std::move(polygons));
+  };
+  std::vector<PolygonWithHoles> lit;
+  for (LitFace& face : faces) lit.emplace_back(face.outer, face.holes.begin(), face.holes.end());
+  return {rings.size() == 1 ? convex_region(rings.front()) : canonical(all), canonical(lit)};
 }
 
 bool interiors_overlap(const Ring2& a, const Ring2& b) {

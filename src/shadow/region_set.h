@@ -13,11 +13,21 @@ namespace penumbra::detail {
 // counter-clockwise rings in subtract.
 Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& subtract = {});
 
+// returns the groups of rings whose closures form connected sets (two rings are joined
+// when they have a point in common, touching included), each group increasing, the
+// groups in the order of their first ring: rings in different groups are strictly apart.
+std::vector<std::vector<std::size_t>> touching_groups(const std::vector<Ring2>& rings);
+
 // returns {unite_minus(rings), unite_minus({window}, rings)} for convex
-// counter-clockwise rings inside the convex window, building the union once (the
-// union of a single ring is that ring's convex_region).
-std::pair<Region2, Region2> unite_and_complement(const std::vector<Ring2>& rings,
-                                                 const Ring2& window);
+// counter-clockwise rings inside the convex window (the union of a single ring is that
+// ring's convex_region), given their touching_groups: each group is united on its own
+// (across threads), and the lit part is the window with the groups' pieces as holes,
+// filled back where a piece has holes; only the pieces that touch the window's boundary
+// take a Boolean difference. The result is the one the Boolean operations on all rings at
+// once give, canonical.
+std::pair<Region2, Region2> unite_and_complement(
+    const std::vector<Ring2>& rings, const std::vector<std::vector<std::size_t>>& groups,
+    const Ring2& window);
 
 // returns true when the interiors of two convex counter-clockwise rings overlap.
 bool interiors_overlap(const Ring2& a, const Ring2& b);

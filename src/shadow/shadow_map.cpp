@@ -177,19 +177,24 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
   for_each_index(scene.objects.size(), options.parallel, [&](std::size_t o) {
     if (needed[o]) volumes[o] = shadow_volume(scene.objects[o].solid, position);
   });
-  LightShadows result = shading.shade(
-      candidates, [&](const Receiver& receiver, const std::vector<std::size_t>& occluders) {
-        const Face& face = shading.face(receiver);
-        if (occluders.empty()) return unite_shadows(face, {});
-        // The face's ring and frame, exact and in intervals, once for all its occluders.
-        const detail::ReceiverClip clip(face);
-        std::vector<OccluderShadow> shadows;
-        for (std::size_t occluder : occluders)
-          if (auto polygon =
-                  detail::shadow_polygon(scene.objects[occluder].solid, volumes[occluder], clip))
-            shadows.push_back({occluder, std::move(*polygon)});
-        return unite_shadows(clip.ring(), std::move(shadows));
-      });
+  LightShadows result = shading.shade(candidates, [&](const Receiver& receiver,
+                                                      const std::vector<std::size_t>& occluders) {
+    const Face& face = shading.face(receiver);
+    if (occluders.empty()) return unite_shadows(face, {});
+    // The face's ring and frame, exact and in intervals, once for all its occluders.
+    const detail::ReceiverClip clip(face);
+    // A face under many occluders (a ground slab under a city) clips them across
+    // threads; the shadows keep the occluders' order.
+    std::vector<std::optional<Ring2>> polygons(occluders.size());
+    for_each_index(occluders.size(), options.parallel && occluders.size() > 64, [&](std::size_t k) {
+      polygons[k] =
+          detail::shadow_polygon(scene.objects[occluders[k]].solid, volumes[occluders[k]], clip);
+    });
+    std::vector<OccluderShadow> shadows;
+    for (std::size_t k = 0; k < occluders.size(); ++k)
+      if (polygons[k]) shadows.push_back({occluders[k], std::move(*polygons[k])});
+    return unite_shadows(face, std::move(shadows));
+  });
   result.stats.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -22,6 +22,8 @@ struct Face {
   std::vector<int> neighbours;   // neighbours[k]: the face across edge (k, k+1)
   Plane3 plane;                  // F(S, Q) = n.Q + d, positive on the outside (Nishita eq. 3)
   FaceFrame frame;               // origin = vertices[0], u along the first edge
+  std::vector<Point2> ring;      // the vertices in the frame (to_frame), exact
+  Exact area;                    // the ring's area in frame units (world area = area |u| |v|)
 
   Vector3 normal() const { return plane.orthogonal_vector(); }
 };

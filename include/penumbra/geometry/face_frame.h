@@ -15,15 +15,20 @@ class FaceFrame {
  public:
   FaceFrame() = default;
   // builds the frame at origin with first axis along u_direction, in the plane of normal.
-  // The axes and their squared lengths are computed once in rationals.
+  // v and the squared lengths are lazy constructions of depth one or two over the
+  // arguments: computed exactly only if a query needs them.
   FaceFrame(const Point3& origin, const Vector3& u_direction, const Vector3& normal);
+
+  // builds the frame from its exact parts: u, v = n x u and their squared lengths
+  // (precondition: they are that).
+  FaceFrame(const Point3& origin, RationalVector3 u, RationalVector3 v, Rational uu, Rational vv);
 
   const Point3& origin() const { return origin_; }
   const Vector3& u() const { return u_; }
   const Vector3& v() const { return v_; }
   // u . u and v . v, exactly.
-  const Rational& squared_u() const { return uu_; }
-  const Rational& squared_v() const { return vv_; }
+  const Exact& squared_u() const { return uu_; }
+  const Exact& squared_v() const { return vv_; }
 
   // returns the frame coordinates of a point of the plane (of any point: its
   // orthogonal projection's coordinates), computed in rationals.
@@ -44,8 +49,8 @@ class FaceFrame {
   Point3 origin_;
   Vector3 u_;
   Vector3 v_;
-  Rational uu_;  // u . u
-  Rational vv_;  // v . v
+  Exact uu_;  // u . u
+  Exact vv_;  // v . v
 };
 
 }  // namespace penumbra

@@ -24,7 +24,9 @@ enum class SvgView { top, camera, faces };
 // parses "top", "camera" or "faces"; nullopt otherwise.
 std::optional<SvgView> parse_svg_view(const std::string& name);
 
-// The SVG sheet, face by face (the drawing is laid out when the faces are all in).
+// The SVG drawing: faces outlined, umbra (dark) and penumbra (light) filled per light, a
+// legend; with loops, the raw penumbra and umbra loops of linear sources as polylines with
+// arrows along their direction. Laid out when the faces are all in.
 class ShadowSvgWriter : public ShadowDocumentSink {
  public:
   // camera is needed by the camera view (precondition).
@@ -32,10 +34,11 @@ class ShadowSvgWriter : public ShadowDocumentSink {
                   bool loops = false);
   ~ShadowSvgWriter() override;
   void begin(const nlohmann::json& header, std::size_t faces) override;
-  void face(const nlohmann::json& entry) override;
+  void faces(const ShadowFaceBlock& block) override;
   void end() override;
 
  private:
+  void face(const nlohmann::json& entry);
   struct Drawing;
   std::ostream& out_;
   SvgView view_;
@@ -44,13 +47,16 @@ class ShadowSvgWriter : public ShadowDocumentSink {
   std::unique_ptr<Drawing> drawing_;
 };
 
-// The DXF file, entity by entity.
+// The DXF file (R2000), entity by entity: each face boundary on layer "faces" and every
+// shadow, umbra, penumbra and lit polygon ring as a closed LWPOLYLINE on layer
+// "<light>-shadow" / "-umbra" / "-penumbra" / "-lit", in the face's plane (object
+// coordinate system by the arbitrary axis algorithm).
 class ShadowDxfWriter : public ShadowDocumentSink {
  public:
   explicit ShadowDxfWriter(std::ostream& out);
   ~ShadowDxfWriter() override;
   void begin(const nlohmann::json& header, std::size_t faces) override;
-  void face(const nlohmann::json& entry) override;
+  void faces(const ShadowFaceBlock& block) override;
   void end() override;
 
  private:
@@ -58,35 +64,19 @@ class ShadowDxfWriter : public ShadowDocumentSink {
   std::unique_ptr<Writer> writer_;
 };
 
-// The CSV table, row by row.
+// The CSV table, row by row from the shadow maps: object,face,light,face_area,shadow_area,
+// lit_area,shadow_percent,faces_away,beyond_range,occluders,umbra_area,penumbra_area,
+// joint_occlusion, one row per face and light.
 class ShadowCsvWriter : public ShadowDocumentSink {
  public:
   explicit ShadowCsvWriter(std::ostream& out) : out_(out) {}
   void begin(const nlohmann::json& header, std::size_t faces) override;
-  void face(const nlohmann::json& entry) override;
+  void faces(const ShadowFaceBlock& block) override;
   void end() override {}
 
  private:
   std::ostream& out_;
   std::unique_ptr<CsvWriter> csv_;
 };
-
-// writes the SVG drawing of document: faces outlined, umbra (dark) and penumbra
-// (light) filled per light, a legend; with loops, the raw penumbra and umbra loops
-// of linear sources as polylines with arrows along their direction. view camera
-// needs camera (precondition).
-void write_shadow_svg(std::ostream& out, const nlohmann::json& document, SvgView view,
-                      const std::optional<Camera>& camera, bool loops = false);
-
-// writes a DXF (R2000) with each face boundary on layer "faces" and every shadow,
-// umbra, penumbra and lit polygon ring as a closed LWPOLYLINE on layer
-// "<light>-shadow" / "-umbra" / "-penumbra" / "-lit",
-// in the face's plane (object coordinate system by the arbitrary axis algorithm).
-void write_shadow_dxf(std::ostream& out, const nlohmann::json& document);
-
-// writes object,face,light,face_area,shadow_area,lit_area,shadow_percent,faces_away,
-// beyond_range,occluders,umbra_area,penumbra_area,joint_occlusion: one row per face
-// and light.
-void write_shadow_csv(std::ostream& out, const nlohmann::json& document);
 
 }  // namespace penumbra::io

@@ -6,6 +6,7 @@
 // With exact, every coordinate also appears as "p/q" rationals under "exact" keys.
 
 #include <cstddef>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -35,33 +36,61 @@ nlohmann::json shadow_header_json(const Scene& scene, const ShadowResult& result
 nlohmann::json shadow_face_json(const Scene& scene, const ShadowResult& result, std::size_t r,
                                 const ShadowJsonOptions& options);
 
+// the same entry as text, laid out as format_json lays out a value at depth, written
+// directly (no tree built).
+std::string shadow_face_text(const Scene& scene, const ShadowResult& result, std::size_t r,
+                             const ShadowJsonOptions& options, int depth);
+
+// A run of consecutive faces of a shadow result as the writers see it: the shadow maps
+// themselves, and, built on first request (across threads) and kept, their entries of
+// "faces" as trees or as text.
+class ShadowFaceBlock {
+ public:
+  ShadowFaceBlock(const Scene& scene, const ShadowResult& result, const ShadowJsonOptions& options,
+                  std::size_t first, std::size_t size)
+      : scene_(scene), result_(result), options_(options), first_(first), size_(size) {}
+
+  const Scene& scene() const { return scene_; }
+  const ShadowResult& result() const { return result_; }
+  std::size_t first() const { return first_; }  // the receiver index of the block's first face
+  std::size_t size() const { return size_; }
+
+  // the entries as trees (shadow_face_json).
+  const std::vector<nlohmann::json>& entries() const;
+  // the entries as text at depth 2, their place in the document (shadow_face_text).
+  const std::vector<std::string>& texts() const;
+
+ private:
+  const Scene& scene_;
+  const ShadowResult& result_;
+  const ShadowJsonOptions& options_;
+  std::size_t first_, size_;
+  mutable std::optional<std::vector<nlohmann::json>> entries_;
+  mutable std::optional<std::vector<std::string>> texts_;
+};
+
 // Receives the document piece by piece, in order: begin() with the document without its
-// faces and the number of faces to come, face() for each entry of "faces", end().
+// faces and the number of faces to come, faces() for each block of faces, end().
 class ShadowDocumentSink {
  public:
   virtual ~ShadowDocumentSink() = default;
   virtual void begin(const nlohmann::json& header, std::size_t faces) = 0;
-  virtual void face(const nlohmann::json& entry) = 0;
+  virtual void faces(const ShadowFaceBlock& block) = 0;
   virtual void end() = 0;
 };
 
 // gives the document of result to every sink: the streamed form of shadow_json for
-// outputs too large to hold whole. The face entries are built a block at a time across
-// threads (options decide what they hold) and handed over in order, so the sinks see the
-// same sequence whatever the threads.
+// outputs too large to hold whole, a block of faces at a time, in order.
 void stream_shadow_document(const Scene& scene, const ShadowResult& result,
                             const ShadowJsonOptions& options,
                             const std::vector<ShadowDocumentSink*>& sinks);
 
-// gives a whole document (as shadow_json builds it) to sink.
-void feed_shadow_document(ShadowDocumentSink& sink, const nlohmann::json& document);
-
-// Writes the document as format_json would, face by face.
+// Writes the document as format_json would, block by block.
 class ShadowJsonWriter : public ShadowDocumentSink {
  public:
   explicit ShadowJsonWriter(std::ostream& out) : out_(out) {}
   void begin(const nlohmann::json& header, std::size_t faces) override;
-  void face(const nlohmann::json& entry) override;
+  void faces(const ShadowFaceBlock& block) override;
   void end() override;
 
  private:

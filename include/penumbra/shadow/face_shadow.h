@@ -46,15 +46,15 @@ struct FaceShadow {
 // returns the face's polygon in its own frame (counter-clockwise).
 Ring2 face_ring(const Face& face);
 
+// returns the face as a region of its own frame: convex_region(face_ring(face)), from the
+// ring and area the face keeps.
+Region2 face_region(const Face& face);
+
 // returns the shadow map of a face that faces away from the source: all shadow.
 FaceShadow unlit_face(const Face& face);
 
 // unites the occluders' shadow polygons on face (Polygon_set_2, aggregated join)
 // and subtracts the union from the face. occluders must be sorted by occluder.
 FaceShadow unite_shadows(const Face& face, std::vector<OccluderShadow> occluders);
-
-// the same for a face given by its ring, face_ring(face) (as exact points built
-// any way: the result depends only on their values).
-FaceShadow unite_shadows(const Ring2& face_ring, std::vector<OccluderShadow> occluders);
 
 }  // namespace penumbra
