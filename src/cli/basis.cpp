@@ -45,7 +45,7 @@ int run(Arguments& args) {
   if (!(args.compression >= 0) || !(args.compression < 1))
     throw InputError("<command line>", "--compress", "must lie in [0, 1)");
   options.compression = args.compression;
-  const Scene scene = load_scene(args.scene);
+  const Scene& scene = load_scene_until_exit(args.scene);
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
   for (const std::string& entry : args.light_degrees) {

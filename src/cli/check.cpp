@@ -10,6 +10,7 @@
 #include "penumbra/io/shadow_compare.h"
 #include "penumbra/io/shadow_json.h"
 #include "penumbra/scene/load_scene.h"
+#include "penumbra/scene/object_selection.h"
 #include "penumbra/shadow/shadow_map.h"
 #include "verbs.h"
 
@@ -26,9 +27,10 @@ nlohmann::json read_golden(const std::string& path) {
   }
 }
 
-int run_check(const std::string& scene_path, const std::string& golden_path) {
+int run_check(const std::string& scene_path, const std::string& golden_path,
+              const std::string& receivers) {
   const nlohmann::json golden = read_golden(golden_path);
-  const Scene scene = load_scene(scene_path);
+  const Scene& scene = load_scene_until_exit(scene_path);
 
   // Recompute as the golden file was computed: its culling and its lights.
   ShadowOptions options;
@@ -48,6 +50,13 @@ int run_check(const std::string& scene_path, const std::string& golden_path) {
     for (const auto& light : golden["lights"]) lights.insert(light.value("name", ""));
   if (lights.size() == 1 && scene.find_light(*lights.begin())) options.light = *lights.begin();
 
+  // --receivers: those objects' faces only, compared with the golden file's faces of them.
+  std::set<std::string> objects;
+  if (!receivers.empty()) {
+    const std::vector<std::size_t> selected = select_objects(scene, receivers);
+    for (std::size_t object : selected) objects.insert(scene.objects[object].name);
+    options.receivers = faces_of_objects(scene, selected);
+  }
   ShadowResult result = compute_shadows(scene, options);
   std::vector<LightShadows> kept;
   for (LightShadows& light : result.lights)
@@ -56,7 +65,8 @@ int run_check(const std::string& scene_path, const std::string& golden_path) {
   result.lights = std::move(kept);
 
   const auto differences =
-      io::compare_shadow_json(golden, io::shadow_json(scene, result, json_options), golden_path);
+      io::compare_shadow_json(golden, io::shadow_json(scene, result, json_options), golden_path,
+                              receivers.empty() ? nullptr : &objects);
   for (const std::string& line : differences) std::cout << line << "\n";
   if (!differences.empty()) {
     std::cout << "check: " << differences.size() << " difference"
@@ -79,7 +89,11 @@ void register_check(CLI::App& app) {
   verb->add_option("SCENE", *scene, "scene file (JSON)")->required();
   verb->add_option("--golden", *golden, "golden shadow loops file written with --exact")
       ->required();
-  verb->callback([scene, golden] { exit_status() = run_check(*scene, *golden); });
+  auto receivers = std::make_shared<std::string>();
+  verb->add_option("--receivers", *receivers,
+                   "check only the faces of these objects: NAME[,NAME...], shell patterns");
+  verb->callback(
+      [scene, golden, receivers] { exit_status() = run_check(*scene, *golden, *receivers); });
 }
 
 }  // namespace penumbra::cli

@@ -180,7 +180,7 @@ int run_illuminance(const IlluminanceArguments& arguments) {
     throw InputError("", "--spacing", "--workplane needs a positive --spacing");
   if (!arguments.workplane && (!arguments.svg.empty() || !arguments.region.empty()))
     throw InputError("", "", "--svg and --region apply to --workplane only");
-  const Scene scene = load_scene(arguments.scene);
+  const Scene& scene = load_scene_until_exit(arguments.scene);
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
   return arguments.workplane ? run_workplane(arguments, scene) : run_points(arguments, scene);

@@ -3,7 +3,11 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
 
+#include "penumbra/base/parallel.h"
 #include "penumbra/io/rational.h"
 #include "penumbra/scene/load_scene.h"
 #include "verbs.h"
@@ -30,7 +34,7 @@ const char* light_kind(const Light& light) {
 }
 
 int run_info(const std::string& path) {
-  const Scene scene = load_scene(path);
+  const Scene& scene = load_scene_until_exit(path);
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
 
@@ -43,18 +47,27 @@ int run_info(const std::string& path) {
             << "objects " << scene.objects.size() << ", faces " << faces << ", vertices "
             << vertices << ", lights " << scene.lights.size() << ", materials "
             << scene.materials.size() - 1 << "\n";
-  for (const Object& object : scene.objects) {
-    std::cout << "\nobject " << object.name << " (" << object.kind
-              << (object.solid.is_flat() ? ", two-sided" : "") << ", material "
-              << scene.materials[object.material].name << "): " << object.solid.faces().size()
-              << " faces, " << object.solid.vertices().size() << " vertices\n";
-    for (std::size_t f = 0; f < object.solid.faces().size(); ++f) {
-      const Face& face = object.solid.faces()[f];
-      std::cout << "  face " << f << ": " << face.vertices.size() << " vertices, ";
-      print_plane(std::cout, face.plane);
-      std::cout << "\n";
-    }
-  }
+  // Each object's lines written on its own thread (rational strings cost), printed in order.
+  std::vector<std::string> texts(scene.objects.size());
+  for_each_index(
+      scene.objects.size(), true,
+      [&](std::size_t k) {
+        const Object& object = scene.objects[k];
+        std::ostringstream out;
+        out << "\nobject " << object.name << " (" << object.kind
+            << (object.solid.is_flat() ? ", two-sided" : "") << ", material "
+            << scene.materials[object.material].name << "): " << object.solid.faces().size()
+            << " faces, " << object.solid.vertices().size() << " vertices\n";
+        for (std::size_t f = 0; f < object.solid.faces().size(); ++f) {
+          const Face& face = object.solid.faces()[f];
+          out << "  face " << f << ": " << face.vertices.size() << " vertices, ";
+          print_plane(out, face.plane);
+          out << "\n";
+        }
+        texts[k] = out.str();
+      },
+      64);
+  for (const std::string& text : texts) std::cout << text;
   std::cout << "\n";
   for (const Light& light : scene.lights) {
     std::cout << "light " << light.name << " (" << light_kind(light) << ")";

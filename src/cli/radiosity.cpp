@@ -22,7 +22,7 @@ struct Arguments {
 
 int run(Arguments& args) {
   finish_radiosity_options(args.radiosity);
-  const Scene scene = load_scene(args.scene);
+  const Scene& scene = load_scene_until_exit(args.scene);
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
   const basis::SceneRadiosity solved = basis::solve_scene_radiosity(scene, args.radiosity.options);

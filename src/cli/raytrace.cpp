@@ -49,7 +49,7 @@ void write_values(const std::string& path, const Scene& scene,
 
 int run_raytrace(const RaytraceArguments& args) {
   const double exposure = parse_exposure(args.exposure);
-  const Scene scene = load_scene(args.scene);
+  const Scene& scene = load_scene_until_exit(args.scene);
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
   if (!scene.camera) throw InputError(args.scene, "camera", "raytrace needs a camera in the scene");

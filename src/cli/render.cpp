@@ -76,7 +76,7 @@ void write_values(const std::string& path, const Scene& scene, const render::Ren
 int run_render(const RenderArguments& args) {
   const double exposure_given = parse_exposure(args.exposure);
   std::vector<double> levels = parse_levels(args.levels);
-  const Scene scene = load_scene(args.scene);
+  const Scene& scene = load_scene_until_exit(args.scene);
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
   if (!scene.camera) throw InputError(args.scene, "camera", "render needs a camera in the scene");

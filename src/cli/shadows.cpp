@@ -11,6 +11,7 @@
 #include "penumbra/io/shadow_drawing.h"
 #include "penumbra/io/shadow_json.h"
 #include "penumbra/scene/load_scene.h"
+#include "penumbra/scene/object_selection.h"
 #include "penumbra/shadow/shadow_map.h"
 #include "verbs.h"
 
@@ -31,6 +32,7 @@ struct ShadowsArguments {
   double full_scale_lux = 500;
   double range_lux = 0;
   bool stats = false;
+  std::string receivers;
 };
 
 int run_shadows(const ShadowsArguments& arguments) {
@@ -41,7 +43,7 @@ int run_shadows(const ShadowsArguments& arguments) {
     return std::chrono::duration<double>(to - from).count();
   };
   const auto started = Clock::now();
-  const Scene scene = load_scene(arguments.scene);
+  const Scene& scene = load_scene_until_exit(arguments.scene);
   const auto loaded = Clock::now();
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
@@ -53,7 +55,9 @@ int run_shadows(const ShadowsArguments& arguments) {
   options.range_fraction = arguments.range_fraction;
   options.full_scale_lux = arguments.full_scale_lux;
   if (arguments.range_lux > 0) options.range_lux = arguments.range_lux;
-  const ShadowResult result = compute_shadows(scene, options);
+  if (!arguments.receivers.empty())
+    options.receivers = faces_of_objects(scene, select_objects(scene, arguments.receivers));
+  const ShadowResult& result = keep_until_exit(compute_shadows(scene, options));
   const auto shaded = Clock::now();
   for (const std::string& warning : result.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
@@ -137,6 +141,9 @@ void register_shadows(CLI::App& app) {
           "--range-lux", arguments->range_lux,
           "sphere of lighting: absolute threshold illuminance in lux (overrides the fraction)")
       ->check(CLI::PositiveNumber);
+  verb->add_option("--receivers", arguments->receivers,
+                   "only the faces of these objects: NAME[,NAME...], each a shell pattern "
+                   "(e.g. ground or 'building1*'); the others still cast shadows");
   verb->add_flag("--stats", arguments->stats,
                  "print faces, pairs tested and time per light on stderr");
   verb->callback([arguments] { exit_status() = run_shadows(*arguments); });

@@ -3,6 +3,8 @@
 #include <iostream>
 #include <string>
 
+#include "penumbra/scene/load_scene.h"
+
 namespace penumbra::cli {
 
 int& exit_status() {
@@ -20,6 +22,15 @@ double parse_exposure(const std::string& text) {
     return -1;
   }
   return used == text.size() && value > 0 ? value : -1;
+}
+
+std::vector<std::shared_ptr<void>>& kept_until_exit() {
+  static auto* kept = new std::vector<std::shared_ptr<void>>;  // never destroyed, on purpose
+  return *kept;
+}
+
+const Scene& load_scene_until_exit(const std::string& path) {
+  return keep_until_exit(load_scene(path));
 }
 
 }  // namespace penumbra::cli

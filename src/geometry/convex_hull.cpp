@@ -22,6 +22,7 @@
 #include "convex_hull_2.h"
 #include "penumbra/geometry/convex_polyhedron.h"
 #include "penumbra/geometry/geometry_error.h"
+#include "small_hull.h"
 
 namespace penumbra {
 namespace {
@@ -164,11 +165,32 @@ std::vector<std::vector<Point3>> faces_of_exact_hull(const std::vector<Point3>& 
   return face_cycles;
 }
 
+// The faces of a few distinct points given as doubles (small_hull.h).
+std::vector<std::vector<Point3>> faces_of_small_hull(const std::vector<FastPoint>& points) {
+  std::vector<std::array<double, 3>> coordinates;
+  for (const FastPoint& p : points) coordinates.push_back({p.x(), p.y(), p.z()});
+  std::vector<std::optional<Point3>> exact(points.size());  // one per vertex, shared
+  std::vector<std::vector<Point3>> faces;
+  for (const std::vector<std::size_t>& cycle : detail::small_hull(coordinates)) {
+    std::vector<Point3> face;
+    for (std::size_t v : cycle) {
+      if (!exact[v]) exact[v].emplace(points[v].x(), points[v].y(), points[v].z());
+      face.push_back(*exact[v]);
+    }
+    faces.push_back(std::move(face));
+  }
+  return faces;
+}
+
 }  // namespace
 
 ConvexPolyhedron ConvexPolyhedron::hull(const std::vector<Point3>& points) {
-  if (const auto doubles = as_doubles(points)) {
+  if (auto doubles = as_doubles(points)) {
     require_solid(*doubles);
+    std::sort(doubles->begin(), doubles->end());
+    doubles->erase(std::unique(doubles->begin(), doubles->end()), doubles->end());
+    if (doubles->size() <= detail::kSmallHullPoints)
+      return from_faces(faces_of_small_hull(*doubles), false);
     return from_faces(faces_of_double_hull(*doubles), false);
   }
   require_solid(points);

@@ -1,7 +1,5 @@
 #include "penumbra/geometry/convex_polyhedron.h"
 
-#include <CGAL/Mpzf.h>
-
 #include <algorithm>
 #include <array>
 #include <map>
@@ -10,6 +8,8 @@
 #include <utility>
 
 #include "convex_hull_2.h"
+#include "dyadic_vector.h"
+#include "penumbra/geometry/dyadic_plane.h"
 #include "penumbra/geometry/geometry_error.h"
 
 namespace penumbra {
@@ -21,16 +21,12 @@ bool point_less(const Point3& a, const Point3& b) {
 
 // returns the coordinates of the points when all are doubles (their intervals single
 // values), or nothing.
-std::optional<std::vector<std::array<double, 3>>> doubles_of(const std::vector<Point3>& points) {
-  std::vector<std::array<double, 3>> coordinates;
+std::optional<std::vector<Double3>> doubles_of(const std::vector<Point3>& points) {
+  std::vector<Double3> coordinates;
   for (const Point3& p : points) {
-    const auto& approx = p.approx();
-    std::array<double, 3> x;
-    for (int i = 0; i < 3; ++i) {
-      if (!approx[i].is_point()) return std::nullopt;
-      x[i] = approx[i].inf();
-    }
-    coordinates.push_back(x);
+    const auto x = double_coordinates(p);
+    if (!x) return std::nullopt;
+    coordinates.push_back(*x);
   }
   return coordinates;
 }
@@ -41,33 +37,23 @@ std::optional<std::vector<std::array<double, 3>>> doubles_of(const std::vector<P
 // constructions (Plane_3 of the first three vertices, CGAL's formula; the frame of
 // face_frame.h), so every later decision is the same.
 void build_from_doubles(Face& face, const std::vector<std::array<double, 3>>& x) {
-  using Dyadic = CGAL::Mpzf;
-  const auto difference = [&](std::size_t k) {
-    return std::array<Dyadic, 3>{Dyadic(x[k][0]) - Dyadic(x[0][0]),
-                                 Dyadic(x[k][1]) - Dyadic(x[0][1]),
-                                 Dyadic(x[k][2]) - Dyadic(x[0][2])};
-  };
-  const auto cross = [](const std::array<Dyadic, 3>& a, const std::array<Dyadic, 3>& b) {
-    return std::array<Dyadic, 3>{a[1] * b[2] - b[1] * a[2], a[2] * b[0] - b[2] * a[0],
-                                 a[0] * b[1] - b[0] * a[1]};
-  };
-  const auto dot = [](const std::array<Dyadic, 3>& a, const std::array<Dyadic, 3>& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  };
-  const auto rational = [](const std::array<Dyadic, 3>& a) {
-    return RationalVector3(Rational(a[0]), Rational(a[1]), Rational(a[2]));
-  };
+  using detail::cross;
+  using detail::dot;
+  using detail::Dyadic;
+  using detail::Dyadic3;
+  using detail::rational_vector;
+  const auto difference = [&](std::size_t k) { return detail::difference(x[k], x[0]); };
   // Plane through p, q, r: (a, b, c) = (q - p) x (r - p), d = -(a, b, c).p.
-  const std::array<Dyadic, 3> u = difference(1), normal = cross(u, difference(2));
-  const Dyadic d =
-      -normal[0] * Dyadic(x[0][0]) - normal[1] * Dyadic(x[0][1]) - normal[2] * Dyadic(x[0][2]);
+  const Dyadic3 u = difference(1), normal = cross(u, difference(2));
+  const Dyadic d = -dot(normal, detail::dyadic(x[0]));
   face.plane = from_exact<Plane3>(
       RationalPlane3(Rational(normal[0]), Rational(normal[1]), Rational(normal[2]), Rational(d)));
   // The frame: origin p, u = q - p, v = n x u.
-  const std::array<Dyadic, 3> v = cross(normal, u);
+  const Dyadic3 v = cross(normal, u);
   const Dyadic uu = dot(u, u), vv = dot(v, v);
   const Rational uu_rational(uu), vv_rational(vv);
-  face.frame = FaceFrame(face.vertices[0], rational(u), rational(v), uu_rational, vv_rational);
+  face.frame =
+      FaceFrame(face.vertices[0], rational_vector(u), rational_vector(v), uu_rational, vv_rational);
   // Frame coordinates s = (x - p).u / uu, t = (x - p).v / vv: numerators in dyadics.
   std::vector<std::array<Dyadic, 2>> numerators;
   for (std::size_t k = 0; k < x.size(); ++k) {

@@ -34,7 +34,26 @@ RationalPoint2 FaceFrame::to_frame(const RationalPoint3& p) const {
 }
 
 RationalPoint3 FaceFrame::to_world(const RationalPoint2& q) const {
-  return CGAL::exact(origin_) + q.x() * CGAL::exact(u_) + q.y() * CGAL::exact(v_);
+  // origin + x u + y v, skipping the zero and unit products of axis-aligned frames (the
+  // usual case in CAD): each rational product costs a gcd. The same value.
+  const auto add = [](Rational& sum, const Rational& x, const Rational& w) {
+    if (CGAL::is_zero(w) || CGAL::is_zero(x)) return;
+    if (CGAL::is_one(w))
+      sum += x;
+    else if (CGAL::is_one(-w))
+      sum -= x;
+    else
+      sum += x * w;
+  };
+  const RationalPoint3& o = CGAL::exact(origin_);
+  const RationalVector3& u = CGAL::exact(u_);
+  const RationalVector3& v = CGAL::exact(v_);
+  Rational world[3] = {o.x(), o.y(), o.z()};
+  for (int i = 0; i < 3; ++i) {
+    add(world[i], q.x(), u[i]);
+    add(world[i], q.y(), v[i]);
+  }
+  return {world[0], world[1], world[2]};
 }
 
 Point2 FaceFrame::to_frame(const Point3& p) const {

@@ -86,7 +86,8 @@ std::string key_of(const json& face) {
 }  // namespace
 
 std::vector<std::string> compare_shadow_json(const json& golden, const json& computed,
-                                             const std::string& golden_file) {
+                                             const std::string& golden_file,
+                                             const std::set<std::string>* objects) {
   const Comparison compare(golden_file);
   if (!golden.is_object() || golden.value("penumbra_shadows", 0) != 1)
     throw InputError(golden_file, "", "not a shadow loops file (\"penumbra_shadows\": 1)");
@@ -96,8 +97,9 @@ std::vector<std::string> compare_shadow_json(const json& golden, const json& com
   const json& faces = compare.need(golden, "faces", "");
   for (std::size_t k = 0; k < faces.size(); ++k) {
     const std::string path = "faces[" + std::to_string(k) + "]";
-    compare.need(faces[k], "object", path);
+    const json& object = compare.need(faces[k], "object", path);
     compare.need(faces[k], "face", path);
+    if (objects && !objects->count(object.get<std::string>())) continue;
     golden_faces[key_of(faces[k])] = {&faces[k], path};
   }
   std::map<std::string, const json*> computed_faces;

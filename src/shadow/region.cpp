@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
 
 namespace penumbra {
@@ -58,15 +59,28 @@ Ring2 canonical_ring(const Ring2& ring) {
   return out;
 }
 
-Region2 canonical_region(std::vector<Polygon2> polygons) {
+Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> area) {
   Region2 region;
-  Rational twice_area = 0;  // in rationals: no chain of lazy sums
-  for (Polygon2& polygon : polygons) {
-    std::sort(polygon.holes.begin(), polygon.holes.end(), ring_less);
-    twice_area += twice_signed_area(polygon.outer);
-    for (const Ring2& hole : polygon.holes) twice_area += twice_signed_area(hole);
+  // In rationals (no chain of lazy sums), each polygon on its own thread: a ground under a
+  // city is one region of 10^4 polygons.
+  std::vector<Rational> twice(area ? 0 : polygons.size());
+  for_each_index(
+      polygons.size(), polygons.size() > 64,
+      [&](std::size_t k) {
+        Polygon2& polygon = polygons[k];
+        std::sort(polygon.holes.begin(), polygon.holes.end(), ring_less);
+        if (area) return;
+        twice[k] = twice_signed_area(polygon.outer);
+        for (const Ring2& hole : polygon.holes) twice[k] += twice_signed_area(hole);
+      },
+      16);
+  if (area) {
+    region.area = std::move(*area);
+  } else {
+    Rational twice_area = 0;
+    for (const Rational& value : twice) twice_area += value;
+    region.area = exact_number(twice_area / 2);
   }
-  region.area = exact_number(twice_area / 2);
   std::sort(polygons.begin(), polygons.end(),
             [](const Polygon2& a, const Polygon2& b) { return ring_less(a.outer, b.outer); });
   region.polygons = std::move(polygons);

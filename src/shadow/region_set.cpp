@@ -200,18 +200,22 @@ std::pair<Region2, Region2> unite_and_complement(
     faces[static_cast<std::size_t>(home[p])].holes.push_back(std::move(hole));
   }
 
-  const auto canonical = [](const std::vector<PolygonWithHoles>& parts) {
+  const auto canonical = [](const std::vector<PolygonWithHoles>& parts,
+                            std::optional<Exact> area = {}) {
     std::vector<Polygon2> polygons(parts.size());
     for_each_index(parts.size(), true, [&](std::size_t k) {
       polygons[k].outer = to_ring(parts[k].outer_boundary());
       for (auto hole = parts[k].holes_begin(); hole != parts[k].holes_end(); ++hole)
         polygons[k].holes.push_back(to_ring(*hole));
     });
-    return canonical_region(std::move(polygons));
+    return canonical_region(std::move(polygons), std::move(area));
   };
   std::vector<PolygonWithHoles> lit;
   for (LitFace& face : faces) lit.emplace_back(face.outer, face.holes.begin(), face.holes.end());
-  return {rings.size() == 1 ? convex_region(rings.front()) : canonical(all), canonical(lit)};
+  Region2 shadow = rings.size() == 1 ? convex_region(rings.front()) : canonical(all);
+  // The lit part and the shadow tile the window: its area is the window's less theirs.
+  const Exact lit_area = exact_number(CGAL::exact(signed_area(window)) - CGAL::exact(shadow.area));
+  return {std::move(shadow), canonical(lit, lit_area)};
 }
 
 bool interiors_overlap(const Ring2& a, const Ring2& b) {

@@ -249,6 +249,15 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
 
 }  // namespace
 
+std::vector<Receiver> faces_of_objects(const Scene& scene,
+                                       const std::vector<std::size_t>& objects) {
+  std::vector<Receiver> faces;
+  for (std::size_t object : objects)
+    for (std::size_t face = 0; face < scene.objects[object].solid.faces().size(); ++face)
+      faces.push_back({object, face});
+  return faces;
+}
+
 ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   ShadowResult result;
   // Canonical order: objects by name (names are unique), faces by canonical index.

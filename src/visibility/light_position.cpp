@@ -5,6 +5,7 @@ namespace penumbra {
 LightPosition LightPosition::at(const Point3& position) {
   LightPosition light;
   light.point_ = position;
+  light.doubles_ = double_coordinates(position);
   return light;
 }
 
@@ -12,6 +13,7 @@ LightPosition LightPosition::toward(const Vector3& travel) {
   CGAL_precondition(travel != CGAL::NULL_VECTOR);
   LightPosition light;
   light.travel_ = travel;
+  light.doubles_ = double_coordinates(travel);
   return light;
 }
 
@@ -23,6 +25,13 @@ CGAL::Sign LightPosition::side_of(const Plane3& plane) const {
 
 std::optional<Plane3> LightPosition::plane_through(const Point3& a, const Point3& b,
                                                    const Point3& inside) const {
+  // Doubles (the usual case): the same plane, its rationals computed once.
+  if (doubles_) {
+    const auto x = double_coordinates(a), y = double_coordinates(b), z = double_coordinates(inside);
+    if (x && y && z)
+      return point_ ? oriented_plane(*x, *y, *doubles_, *z)
+                    : oriented_plane_along(*x, *y, *doubles_, *z);
+  }
   if (point_) {
     if (CGAL::collinear(a, b, *point_)) return std::nullopt;
     // Plane3(a, b, Q): a, b, Q counter-clockwise seen from the positive side.

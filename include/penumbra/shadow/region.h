@@ -5,6 +5,7 @@
 // collinear vertices, starting at its lexicographically smallest vertex), polygons
 // sorted, so that equal sets have equal representations.
 
+#include <optional>
 #include <vector>
 
 #include "penumbra/geometry/kernel.h"
@@ -39,8 +40,9 @@ Exact signed_area(const Ring2& ring);
 Ring2 canonical_ring(const Ring2& ring);
 
 // sorts holes and polygons and fills area: the canonical form of a region whose
-// rings are already canonical.
-Region2 canonical_region(std::vector<Polygon2> polygons);
+// rings are already canonical. area, when given, is the region's area known otherwise
+// (the window's less its complement's: the same exact value, without summing the rings).
+Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> area = {});
 
 // returns a region holding the single convex polygon ring (counter-clockwise).
 Region2 convex_region(const Ring2& ring);

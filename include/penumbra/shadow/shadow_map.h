@@ -66,4 +66,8 @@ struct ShadowResult {
 // shadows a face (docs/linear-shadows.md).
 ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options = {});
 
+// every face of the objects (indices into scene.objects), as ShadowOptions::receivers
+// (`--receivers`, scene/object_selection.h).
+std::vector<Receiver> faces_of_objects(const Scene& scene, const std::vector<std::size_t>& objects);
+
 }  // namespace penumbra

@@ -7,6 +7,7 @@
 
 #include <optional>
 
+#include "penumbra/geometry/dyadic_plane.h"
 #include "penumbra/geometry/kernel.h"
 
 namespace penumbra {
@@ -39,6 +40,8 @@ class LightPosition {
  private:
   std::optional<Point3> point_;
   Vector3 travel_;
+  // the position (or travel) as doubles, when it is: planes are then built in dyadics.
+  std::optional<Double3> doubles_;
 };
 
 }  // namespace penumbra
