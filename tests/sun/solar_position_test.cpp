@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
+#include <vector>
 
 #include "penumbra/sun/civil_time.h"
 #include "penumbra/sun/solar_position.h"
@@ -234,6 +235,56 @@ BOOST_AUTO_TEST_CASE(atmosphere_changes_only_the_elevation) {
   BOOST_TEST(refracted.elevation_deg - airless.elevation_deg ==
                  refraction_deg(airless.elevation_deg, Atmosphere{820, 11}),
              tt::tolerance(1e-12));
+}
+
+// === Many instants
+
+BOOST_AUTO_TEST_CASE(solver_matches_the_one_shot_position) {
+  // The solver interpolates the Earth's motion and the pole within each TT day; the
+  // one-shot function evaluates every model at the instant. docs/sun.md bounds the
+  // difference far below 1e-5 degrees; compare the directions (so that azimuths near the
+  // zenith do not magnify it) over a year of irregular steps, forward, backward and
+  // jumping between days, at instants on 0h TT and around a leap second.
+  struct Case {
+    Site site;
+    std::optional<Atmosphere> atmosphere;
+  } cases[] = {{{51.5, -0.12, 30}, std::nullopt},
+               {{-33.9, 151.2, 0}, Atmosphere{990, 25}},
+               {{78.2, 15.65, 500}, Atmosphere{950, -10}},
+               {{0, 0, 0}, std::nullopt}};
+  const Duration step{(7 * 3600 + 13 * 60 + 13) * std::int64_t{1'000'000}};
+  const UtcInstant start = utc("2016-06-01T00:00:00Z");
+  std::vector<UtcInstant> instants;
+  for (UtcInstant t = start; t < start + Duration{std::int64_t{366} * 86'400'000'000}; t = t + step)
+    instants.push_back(t);
+  for (std::size_t k = 0; k < 40; ++k) instants.push_back(instants[(k * 7919) % instants.size()]);
+  instants.push_back(utc("2016-12-31T23:59:59.5Z"));  // a leap second followed
+  instants.push_back(utc("2017-01-01T00:00:00Z"));
+  instants.push_back(utc("2016-11-30T23:58:51.816Z"));  // 0h TT: TT - UTC was 68.184 s
+  double worst_angle = 0;
+  for (const Case& c : cases) {
+    SolarPositionSolver solver(c.site, c.atmosphere, 0.3);
+    for (UtcInstant t : instants) {
+      const SolarPosition fast = solver.at(t);
+      const SolarPosition reference = solar_position(c.site, t, c.atmosphere, 0.3);
+      const auto u = light_direction(fast, 0), v = light_direction(reference, 0);
+      const double cross[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                               u[0] * v[1] - u[1] * v[0]};
+      const double angle =
+          std::atan2(std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]),
+                     u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) /
+          kDegree;
+      worst_angle = std::max(worst_angle, angle);
+      BOOST_TEST_REQUIRE(angle < 1e-5);
+      BOOST_TEST_REQUIRE(std::abs(fast.elevation_deg - reference.elevation_deg) < 1e-5);
+    }
+  }
+  BOOST_TEST_MESSAGE("solver against the one-shot position: max " << worst_angle << " deg");
+}
+
+BOOST_AUTO_TEST_CASE(solver_refuses_what_the_one_shot_refuses) {
+  BOOST_CHECK_THROW(SolarPositionSolver({91, 0, 0}), std::invalid_argument);
+  BOOST_CHECK_THROW(SolarPositionSolver({0, 0, 0}, Atmosphere{-1, 10}), std::invalid_argument);
 }
 
 // === The model frame
