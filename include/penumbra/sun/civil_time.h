@@ -139,8 +139,9 @@ std::string format_date_time(UtcInstant t, int offset_minutes);
 // steps after local midnight of from's date, local meaning from.offset_minutes (DESIGN.md:
 // "steps fall on whole multiples of --step from local midnight"). The count continues
 // across days from that one midnight, so a step that does not divide 24 h drifts against
-// later midnights. Empty when to < from.utc. Throws std::invalid_argument when step is
-// not positive.
+// later midnights. Empty when to < from.utc; at most (to - from.utc) / step + 1 instants,
+// which callers taking a range from the user should bound first. Throws
+// std::invalid_argument when step is not positive.
 std::vector<UtcInstant> step_instants(const ZonedInstant& from, UtcInstant to, Duration step);
 
 }  // namespace penumbra::sun
