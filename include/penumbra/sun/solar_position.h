@@ -34,9 +34,10 @@ struct SolarPosition {
   double zenith_deg() const { return 90 - elevation_deg; }
 };
 
-// The Sun's semidiameter and the refraction at the horizon assumed by NREL SPA (Reda
-// and Andreas 2004, eq. 43): below an airless elevation of -(0.26667 + 0.5667) degrees
-// no part of the Sun can be refracted into view, and no refraction is applied.
+// The Sun's semidiameter and the standard refraction at the horizon, as NREL's spa.c
+// uses them (SUN_RADIUS, atmos_refract): below an airless elevation of
+// -(0.26667 + 0.5667) degrees no part of the Sun can be refracted into view, and spa.c
+// and solar_position apply no refraction.
 inline constexpr double kRefractionLimitDeg = -(0.26667 + 0.5667);
 
 // returns the apparent topocentric position of the Sun's centre seen from site at
