@@ -6,6 +6,10 @@ find_package(nlohmann_json 3.10 REQUIRED)
 find_package(TBB REQUIRED)
 find_package(PNG REQUIRED)
 find_package(embree 3 REQUIRED)
+# ERFA (liberfa-dev), the IAU SOFA models for the sun layer; Debian ships a pkg-config
+# file and no CMake package.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(erfa REQUIRED IMPORTED_TARGET erfa)
 if(PENUMBRA_BUILD_CLI)
   find_package(CLI11 REQUIRED)
 endif()
