@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   register_basis(app);
   register_relight(app);
   register_serve(app);
+  register_sun(app);
 
   try {
     app.parse(argc, argv);

@@ -31,6 +31,7 @@ void register_radiosity(CLI::App& app);
 void register_basis(CLI::App& app);
 void register_relight(CLI::App& app);
 void register_serve(CLI::App& app);
+void register_sun(CLI::App& app);
 
 // returns the --exposure value given on the command line: 0 for "auto", the value
 // when it is a positive number, -1 otherwise (shared by render and raytrace).

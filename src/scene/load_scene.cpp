@@ -64,7 +64,7 @@ class SceneReader {
   void read(const nlohmann::json& document) {
     const JsonCursor root(document, "", file_, &scene_.warnings);
     root.require_object();
-    root.warn_unknown_keys({"penumbra", "materials", "objects", "lights", "camera"});
+    root.warn_unknown_keys({"penumbra", "materials", "objects", "lights", "camera", "north_deg"});
     const JsonCursor version = root.at("penumbra");
     if (!version.value().is_number_integer() || version.value().get<long>() != 1)
       version.fail("unsupported scene format version " + version.value().dump() + " (expected 1)");
@@ -75,6 +75,7 @@ class SceneReader {
     if (const auto materials = root.find("materials"))
       for (const auto& [name, cursor] : materials->members()) read_material(name, cursor);
 
+    if (const auto north = root.find("north_deg")) scene_.north_deg = north->number_in(-360, 360);
     if (const auto objects = root.find("objects")) read_objects(*objects);
     if (const auto lights = root.find("lights"))
       for (const JsonCursor& light : lights->elements()) read_light(light);
@@ -251,7 +252,7 @@ class SceneReader {
 
   void read_light(const JsonCursor& cursor) {
     cursor.require_object();
-    static const char* kinds[] = {"point", "linear", "directional"};
+    static const char* kinds[] = {"point", "linear", "directional", "sun"};
     std::string kind;
     for (const char* k : kinds) {
       if (!cursor.has(k)) continue;
@@ -259,7 +260,8 @@ class SceneReader {
         cursor.fail("a light has one kind, found both \"" + kind + "\" and \"" + k + "\"");
       kind = k;
     }
-    if (kind.empty()) cursor.fail("a light needs one of \"point\", \"linear\", \"directional\"");
+    if (kind.empty())
+      cursor.fail("a light needs one of \"point\", \"linear\", \"directional\", \"sun\"");
 
     Light light;
     light.json_path = cursor.path();
@@ -278,12 +280,50 @@ class SceneReader {
       if (points[0] == points[1]) ends.fail("a linear source must not have zero length");
       light.source =
           LinearLight{points[0], points[1], cursor.at("candela_per_metre").non_negative_number()};
-    } else {
+    } else if (kind == "directional") {
       cursor.warn_unknown_keys({"name", "directional", "illuminance"});
       light.source = DirectionalLight{cursor.at("directional").direction(),
                                       cursor.at("illuminance").non_negative_number()};
+    } else {
+      cursor.warn_unknown_keys({"name", "sun", "illuminance"});
+      SunPlacement sun = read_sun(cursor.at("sun"));
+      sun.name = light.name;
+      sun.json_path = cursor.path();
+      sun.illuminance = cursor.at("illuminance").non_negative_number();
+      scene_.suns.push_back(sun);
+      // The direction at the scene's time; a sun below the horizon lights nothing.
+      const sun::SolarPosition seen = sun::solar_position(sun.site, sun.time.utc, sun.atmosphere);
+      if (seen.elevation_deg <= 0) {
+        scene_.warnings.push_back(file_ + ": " + cursor.path() + ": the sun '" + light.name +
+                                  "' is below the horizon at " +
+                                  sun::format_date_time(sun.time.utc, sun.time.offset_minutes) +
+                                  " (elevation " + std::to_string(seen.elevation_deg) +
+                                  " degrees): it lights nothing");
+        return;
+      }
+      light.source =
+          DirectionalLight{sun::light_direction(seen, scene_.north_deg), sun.illuminance};
     }
     scene_.lights.push_back(std::move(light));
+  }
+
+  // reads "sun": {"latitude", "longitude", "time", "elevation", "pressure", "temperature"}.
+  SunPlacement read_sun(const JsonCursor& cursor) const {
+    cursor.require_object();
+    cursor.warn_unknown_keys(
+        {"latitude", "longitude", "time", "elevation", "pressure", "temperature"});
+    SunPlacement sun;
+    sun.site.latitude_deg = cursor.at("latitude").number_in(-90, 90);
+    sun.site.longitude_deg = cursor.at("longitude").number_in(-180, 180);
+    if (const auto elevation = cursor.find("elevation")) sun.site.elevation_m = elevation->number();
+    const JsonCursor time = cursor.at("time");
+    sun.time = sun::parse_date_time(time.string(), std::nullopt, {file_, time.path()});
+    if (cursor.has("pressure") != cursor.has("temperature"))
+      cursor.fail("give both \"pressure\" and \"temperature\" for refraction, or neither");
+    if (cursor.has("pressure"))
+      sun.atmosphere = sun::Atmosphere{cursor.at("pressure").positive_number(),
+                                       cursor.at("temperature").number_in(-273.15, 100)};
+    return sun;
   }
 
   PointLight read_point_light(const JsonCursor& cursor) const {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 
 namespace penumbra::sun {
 namespace {

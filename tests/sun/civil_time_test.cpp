@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "penumbra/input_error.h"
+#include "penumbra/base/input_error.h"
 #include "penumbra/sun/civil_time.h"
 
 using namespace penumbra::sun;

@@ -17,6 +17,7 @@
 #include "penumbra/geometry/convex_polyhedron.h"
 #include "penumbra/photometry/distribution.h"
 #include "penumbra/scene/camera.h"
+#include "penumbra/sun/solar_position.h"
 
 namespace penumbra {
 
@@ -69,6 +70,17 @@ struct DirectionalLight {
   double illuminance;  // lux on a plane normal to the direction
 };
 
+// A sun given by place and time (`"sun": {...}`, docs/sun.md): the scene keeps it so that
+// `penumbra sun` and sun studies can move it through time.
+struct SunPlacement {
+  std::string name;       // the light's name
+  std::string json_path;  // "lights[k]"
+  sun::Site site;
+  std::optional<sun::Atmosphere> atmosphere;  // refraction when pressure and temperature are given
+  sun::ZonedInstant time;                     // the scene's instant, with its UTC offset
+  double illuminance = 0;                     // lux on a plane normal to the sunlight
+};
+
 struct Light {
   std::string name;
   std::variant<PointLight, LinearLight, DirectionalLight> source;
@@ -80,6 +92,8 @@ struct Scene {
   std::vector<Material> materials;  // materials[0] is the default material
   std::vector<Object> objects;
   std::vector<Light> lights;
+  std::vector<SunPlacement> suns;  // the lights given by place and time (above the horizon or not)
+  double north_deg = 0;  // true north from the model's +Y, counter-clockwise seen from above
   std::optional<Camera> camera;
   std::vector<std::string> warnings;  // e.g. unknown keys: reported, not fatal
 

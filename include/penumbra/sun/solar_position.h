@@ -9,8 +9,8 @@
 
 #include <optional>
 
+#include "penumbra/base/vec3d.h"
 #include "penumbra/sun/civil_time.h"
-#include "penumbra/vec3d.h"
 
 namespace penumbra::sun {
 
