@@ -9,12 +9,14 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <exception>
 #include <fstream>
 #include <map>
 #include <unordered_map>
 #include <utility>
 
 #include "penumbra/base/input_error.h"
+#include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
 #include "planar_faces.h"
 
@@ -313,9 +315,77 @@ const aiScene* read_scene(Assimp::Importer& importer, const std::filesystem::pat
   return scene;
 }
 
+// returns the part of one node: its meshes' triangles placed, repaired and merged into
+// planar faces (none when the node has only points and lines).
+ModelPart import_part(const aiScene& scene, const PartSource& source, const Placer& placer,
+                      const std::string& file, double snap) {
+  const std::string location = "part " + source.name;
+  ModelPart part;
+  part.name = source.name;
+  TriangleSoup soup;
+  const bool identity = is_identity(source.world);
+  const bool mirrored = placer.mirrors() != CGAL::is_negative(determinant(source.world));
+  std::size_t triangles = 0;
+  // The file's points, each placed once: formats that repeat a point per face (STL, OBJ
+  // through Assimp) give the same coordinates several times.
+  std::unordered_map<std::array<ai_real, 3>, int, FloatTripleHash> placed;
+  std::vector<int> soup_index;
+  for (unsigned m = 0; m < source.node->mNumMeshes; ++m) {
+    const unsigned mesh_index = source.node->mMeshes[m];
+    const aiMesh& mesh = *scene.mMeshes[mesh_index];
+    soup_index.assign(mesh.mNumVertices, -1);
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const aiVector3D& p = mesh.mVertices[v];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw InputError(file, location,
+                         "mesh " + std::to_string(mesh_index) + ", vertex " + std::to_string(v) +
+                             ": a coordinate is not finite");
+      const auto [it, inserted] = placed.emplace(std::array<ai_real, 3>{p.x, p.y, p.z},
+                                                 static_cast<int>(soup.points.size()));
+      soup_index[v] = it->second;
+      if (!inserted) {
+        ++part.repairs.duplicate_vertices_merged;
+        continue;
+      }
+      std::array<Rational, 3> q = {Rational(static_cast<double>(p.x)),
+                                   Rational(static_cast<double>(p.y)),
+                                   Rational(static_cast<double>(p.z))};
+      if (!identity) q = map_point(source.world, q);
+      try {
+        soup.points.push_back(placer.place(std::move(q), part.repairs.snapped_coordinates_changed));
+      } catch (const std::range_error& e) {
+        throw InputError(file, location,
+                         "mesh " + std::to_string(mesh_index) + ", vertex " + std::to_string(v) +
+                             ": " + e.what());
+      }
+    }
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) {
+        ++part.repairs.non_surface_primitives_ignored;
+        continue;
+      }
+      std::array<int, 3> corners = {soup_index[face.mIndices[0]], soup_index[face.mIndices[1]],
+                                    soup_index[face.mIndices[2]]};
+      if (mirrored) std::swap(corners[1], corners[2]);
+      soup.corners.push_back(corners);
+      soup.materials.push_back(static_cast<int>(mesh.mMaterialIndex));
+      ++triangles;
+    }
+  }
+  part.faces = planar_faces(soup, part.repairs);
+  if (part.faces.empty() && triangles > 0)
+    throw InputError(file, location,
+                     "every face has fewer than 3 distinct, non-collinear points after "
+                     "snapping to the " +
+                         std::to_string(snap) + " m grid");
+  return part;
+}
+
 }  // namespace
 
-ImportedModel import_model(const std::filesystem::path& path, const Placement& placement) {
+ImportedModel import_model(const std::filesystem::path& path, const Placement& placement,
+                           bool parallel) {
   const std::string file = path.string();
   const Placer placer(placement, file);
   Assimp::Importer importer;
@@ -327,68 +397,20 @@ ImportedModel import_model(const std::filesystem::path& path, const Placement& p
 
   ImportedModel model;
   model.materials = materials(scene);
-  for (const PartSource& source : sources) {
-    const std::string location = "part " + source.name;
-    ModelPart part;
-    part.name = source.name;
-    TriangleSoup soup;
-    const bool identity = is_identity(source.world);
-    const bool mirrored = placer.mirrors() != CGAL::is_negative(determinant(source.world));
-    std::size_t triangles = 0;
-    // The file's points, each placed once: formats that repeat a point per face (STL, OBJ
-    // through Assimp) give the same coordinates several times.
-    std::unordered_map<std::array<ai_real, 3>, int, FloatTripleHash> placed;
-    std::vector<int> soup_index;
-    for (unsigned m = 0; m < source.node->mNumMeshes; ++m) {
-      const unsigned mesh_index = source.node->mMeshes[m];
-      const aiMesh& mesh = *scene.mMeshes[mesh_index];
-      soup_index.assign(mesh.mNumVertices, -1);
-      for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-        const aiVector3D& p = mesh.mVertices[v];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-          throw InputError(file, location,
-                           "mesh " + std::to_string(mesh_index) + ", vertex " + std::to_string(v) +
-                               ": a coordinate is not finite");
-        const auto [it, inserted] = placed.emplace(std::array<ai_real, 3>{p.x, p.y, p.z},
-                                                   static_cast<int>(soup.points.size()));
-        soup_index[v] = it->second;
-        if (!inserted) {
-          ++part.repairs.duplicate_vertices_merged;
-          continue;
-        }
-        std::array<Rational, 3> q = {Rational(static_cast<double>(p.x)),
-                                     Rational(static_cast<double>(p.y)),
-                                     Rational(static_cast<double>(p.z))};
-        if (!identity) q = map_point(source.world, q);
-        try {
-          soup.points.push_back(
-              placer.place(std::move(q), part.repairs.snapped_coordinates_changed));
-        } catch (const std::range_error& e) {
-          throw InputError(file, location,
-                           "mesh " + std::to_string(mesh_index) + ", vertex " + std::to_string(v) +
-                               ": " + e.what());
-        }
-      }
-      for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
-        const aiFace& face = mesh.mFaces[f];
-        if (face.mNumIndices != 3) {
-          ++part.repairs.non_surface_primitives_ignored;
-          continue;
-        }
-        std::array<int, 3> corners = {soup_index[face.mIndices[0]], soup_index[face.mIndices[1]],
-                                      soup_index[face.mIndices[2]]};
-        if (mirrored) std::swap(corners[1], corners[2]);
-        soup.corners.push_back(corners);
-        soup.materials.push_back(static_cast<int>(mesh.mMaterialIndex));
-        ++triangles;
-      }
+  // Parts are independent: placed and merged across threads, assembled in file order (the
+  // first failing part in file order is the error reported).
+  std::vector<ModelPart> parts(sources.size());
+  std::vector<std::exception_ptr> errors(sources.size());
+  for_each_index(sources.size(), parallel, [&](std::size_t k) {
+    try {
+      parts[k] = import_part(scene, sources[k], placer, file, placement.snap);
+    } catch (...) {
+      errors[k] = std::current_exception();
     }
-    part.faces = planar_faces(soup, part.repairs);
-    if (part.faces.empty() && triangles > 0)
-      throw InputError(file, location,
-                       "every face has fewer than 3 distinct, non-collinear points after "
-                       "snapping to the " +
-                           std::to_string(placement.snap) + " m grid");
+  });
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    if (errors[k]) std::rethrow_exception(errors[k]);
+    ModelPart& part = parts[k];
     model.repairs += part.repairs;
     if (part.faces.empty()) continue;  // points and lines only
     const int material = part.faces.front().material;

@@ -1,8 +1,8 @@
 #pragma once
 // The exact planar-face model of a triangle soup (docs/scene-format.md, "Mesh import"):
 // equal points merged, degenerate triangles dropped, components oriented consistently
-// (closed ones outward), and adjacent triangles lying exactly in one plane merged into one
-// face with an outer ring and holes.
+// (closed ones outward), and the triangles of each exact oriented plane united (CGAL
+// Polygon_set_2 in the plane's projection) into faces with an outer ring and holes.
 
 #include <array>
 #include <vector>

@@ -384,6 +384,29 @@ BOOST_AUTO_TEST_CASE(ifc_house_walls_merge_into_faces_with_window_holes) {
   BOOST_TEST(wall->colour.has_value());
 }
 
+BOOST_AUTO_TEST_CASE(parallel_and_serial_imports_agree) {
+  const auto path = test::gunzip_fixture("meshes/AC14-FZK-Haus.ifc");
+  const ImportedModel parallel = import_model(path, {}, true);
+  const ImportedModel serial = import_model(path, {}, false);
+  BOOST_TEST_REQUIRE(parallel.parts.size() == serial.parts.size());
+  std::size_t differences = 0;
+  for (std::size_t k = 0; k < serial.parts.size(); ++k) {
+    const ModelPart& a = parallel.parts[k];
+    const ModelPart& b = serial.parts[k];
+    if (a.name != b.name || a.faces.size() != b.faces.size()) {
+      ++differences;
+      continue;
+    }
+    for (std::size_t f = 0; f < a.faces.size(); ++f)
+      if (a.faces[f].plane != b.faces[f].plane || a.faces[f].outer != b.faces[f].outer ||
+          a.faces[f].holes != b.faces[f].holes)
+        ++differences;
+  }
+  BOOST_TEST(differences == 0u);
+  BOOST_TEST(parallel.repairs.duplicate_vertices_merged ==
+             serial.repairs.duplicate_vertices_merged);
+}
+
 BOOST_AUTO_TEST_CASE(snapping_makes_a_noisy_slab_exactly_planar) {
   const auto path = test::fixture("meshes/noisy-slab.obj");
   const ImportedModel snapped = import_model(path);

@@ -29,13 +29,15 @@ struct Placement {
   // (0, 0, 0, 1) and its 3 x 3 part invertible.
   std::optional<std::array<double, 16>> transform;
   // the grid, in metres, each scaled coordinate is rounded to (ties away from zero); 0 = off.
+  // Read as the shortest decimal that rounds to this double (1e-6 is exactly 1/1000000).
   double snap = 1e-6;
 };
 
-// A planar polygon with holes, exact. Seen from the side its plane's normal points to
-// (outside), the outer ring runs counter-clockwise and each hole clockwise; no ring has
-// two consecutive equal points or three consecutive collinear ones. Rings are simple but a
-// hole may touch the outer ring or another hole at a vertex.
+// A planar polygon with holes, exact: one connected piece of the union of a part's triangles
+// lying in one oriented plane (with one material). Seen from the side its plane's normal
+// points to (outside), the outer ring runs counter-clockwise and each hole clockwise; no
+// ring has two consecutive equal points or three consecutive collinear ones. Rings do not
+// cross, but a hole may touch the outer ring or another hole at a point.
 struct PlanarFace {
   Plane3 plane;  // positive side = outside; every ring point lies on it exactly
   std::vector<Point3> outer;
@@ -87,7 +89,9 @@ struct ImportedModel {
 // placed as placement says. Throws InputError naming the file (and the part, where one is
 // concerned) for a missing or unreadable file, a format Assimp does not read, a
 // coordinate that is not finite, a part none of whose faces survives snapping, a file
-// without faces, or an invalid placement.
-ImportedModel import_model(const std::filesystem::path& path, const Placement& placement = {});
+// without faces, or an invalid placement. Parts are built across threads when parallel;
+// the result is the same either way.
+ImportedModel import_model(const std::filesystem::path& path, const Placement& placement = {},
+                           bool parallel = true);
 
 }  // namespace penumbra
