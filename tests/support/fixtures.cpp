@@ -3,6 +3,7 @@
 #include <png.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <zlib.h>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -21,6 +22,22 @@ std::filesystem::path fixture(const std::string& relative) {
 
 std::filesystem::path photometry_fixture(const std::string& relative) {
   return fixture("photometry/" + relative);
+}
+
+std::filesystem::path gunzip_fixture(const std::string& relative) {
+  const auto source = fixture(relative + ".gz");
+  gzFile in = gzopen(source.string().c_str(), "rb");
+  if (!in) throw std::runtime_error("cannot open " + source.string());
+  const auto name = std::filesystem::path(relative).filename();
+  const auto target = scratch_dir("gunzip-" + name.string()) / name;
+  std::ofstream out(target, std::ios::binary);
+  char buffer[1 << 16];
+  int count = 0;
+  while ((count = gzread(in, buffer, sizeof buffer)) > 0) out.write(buffer, count);
+  const bool failed = count < 0;
+  gzclose(in);
+  if (failed || !out) throw std::runtime_error("cannot decompress " + source.string());
+  return target;
 }
 
 std::filesystem::path penumbra_binary() {

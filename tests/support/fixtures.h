@@ -18,6 +18,10 @@ std::filesystem::path fixture(const std::string& relative);
 // returns fixtures/photometry/<relative>: real photometric files (their provenance in
 // fixtures/photometry/README.md).
 std::filesystem::path photometry_fixture(const std::string& relative);
+// returns a decompressed copy of fixtures/<relative>.gz in the build's temporary area
+// (a real model too large for the repository is kept gzip-compressed; the copy has
+// relative's file name, so readers still choose the format by its extension).
+std::filesystem::path gunzip_fixture(const std::string& relative);
 // returns the built penumbra executable (from CTest's environment).
 std::filesystem::path penumbra_binary();
 
