@@ -1,7 +1,10 @@
 #include "penumbra/io/shadow_json.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <unordered_map>
+#include <vector>
 
 #include "json_emitter.h"
 #include "penumbra/base/parallel.h"
@@ -52,9 +55,22 @@ void emit_unit(JsonEmitter& out, const Vector3& v) {
   out.end_array();
 }
 
+// A receiving face while it is written. Its shadow, umbra, lit holes and occluder polygons
+// repeat the same points (the same lazy handles), each converted from frame to world
+// coordinates in rationals: rounded holds each point's world doubles, computed once and
+// across threads (a ground under a city has 10^5 of them), world maps a point's identity
+// to its slot.
+struct FaceOutput {
+  const Face& face;
+  std::unordered_map<std::size_t, std::size_t> world;
+  std::vector<std::array<double, 3>> rounded;
+  std::unordered_map<const OccluderShadow*, double> occluder_area;  // m^2, computed alike
+};
+
 // the ring's points in the world: a face vertex as it is, any other point computed in
 // rationals from its frame coordinates (no lazy construction made for output).
-void emit_ring(JsonEmitter& out, const Ring2& ring, const Face& face, bool exact) {
+void emit_ring(JsonEmitter& out, const Ring2& ring, const FaceOutput& output, bool exact) {
+  const Face& face = output.face;
   out.begin_array();
   for (const Point2& p : ring) {
     const auto vertex = std::find_if(face.ring.begin(), face.ring.end(), [&](const Point2& q) {
@@ -68,6 +84,14 @@ void emit_ring(JsonEmitter& out, const Ring2& ring, const Face& face, bool exact
         emit_point(out, world);
       continue;
     }
+    if (!exact) {
+      if (const auto known = output.world.find(p.id()); known != output.world.end()) {
+        out.begin_array();
+        for (double x : output.rounded[known->second]) out.number(x);
+        out.end_array();
+        continue;
+      }
+    }
     const RationalPoint3 world = face.frame.to_world(CGAL::exact(p));
     if (exact)
       emit_exact_point(out, world);
@@ -78,7 +102,7 @@ void emit_ring(JsonEmitter& out, const Ring2& ring, const Face& face, bool exact
 }
 
 // a polygon's rings: {"holes": [...], "outer": [...]}.
-void emit_rings(JsonEmitter& out, const Polygon2& polygon, const Face& face, bool exact) {
+void emit_rings(JsonEmitter& out, const Polygon2& polygon, const FaceOutput& face, bool exact) {
   out.key("holes");
   out.begin_array();
   for (const Ring2& hole : polygon.holes) emit_ring(out, hole, face, exact);
@@ -87,10 +111,10 @@ void emit_rings(JsonEmitter& out, const Polygon2& polygon, const Face& face, boo
   emit_ring(out, polygon.outer, face, exact);
 }
 
-void emit_region(JsonEmitter& out, const Region2& region, const Face& face, bool exact) {
+void emit_region(JsonEmitter& out, const Region2& region, const FaceOutput& face, bool exact) {
   out.begin_object();
   out.key("area");
-  out.number(world_area(region, face));
+  out.number(world_area(region, face.face));
   out.key("polygons");
   out.begin_array();
   for (const Polygon2& polygon : region.polygons) {
@@ -214,10 +238,13 @@ namespace {
 
 // An occluder's entry; members in key order.
 void emit_occluder(JsonEmitter& out, const Scene& scene, const OccluderShadow& occluder,
-                   const Face& face, bool exact) {
+                   const FaceOutput& face, bool exact) {
   out.begin_object();
   out.key("area");
-  out.number(world_area(convex_region(occluder.polygon), face));
+  const auto area = face.occluder_area.find(&occluder);
+  out.number(area != face.occluder_area.end()
+                 ? area->second
+                 : world_area(convex_region(occluder.polygon), face.face));
   const bool linear = occluder.linear_case.has_value();
   if (linear) {
     out.key("case");
@@ -271,7 +298,7 @@ void emit_occluder(JsonEmitter& out, const Scene& scene, const OccluderShadow& o
 
 // A light's entry for one face; members in key order.
 void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& shadow,
-                const Scene& scene, const Face& face, bool exact) {
+                const Scene& scene, const FaceOutput& face, bool exact) {
   out.begin_object();
   if (shadow.beyond_range) {
     out.key("beyond_range");
@@ -311,21 +338,70 @@ void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& sha
   out.end_object();
 }
 
+// the fewest occluders for which a face's world points and areas are computed ahead.
+constexpr std::size_t kCachedOccluders = 32;
+
+// returns the face ready to be written: the world doubles of every point of its shadows.
+FaceOutput prepare_output(const Face& face, const ShadowResult& result, std::size_t r) {
+  FaceOutput output{face, {}, {}, {}};
+  // Worth it only for a face under many shadows; a small face writes its points directly.
+  std::size_t occluder_count = 0;
+  for (const LightShadows& light : result.lights) occluder_count += light.faces[r].occluders.size();
+  if (occluder_count < kCachedOccluders) return output;
+  std::vector<const Point2*> points;
+  std::vector<const OccluderShadow*> occluders;
+  const auto add_ring = [&](const Ring2& ring) {
+    for (const Point2& p : ring)
+      if (output.world.emplace(p.id(), points.size()).second) points.push_back(&p);
+  };
+  const auto add_region = [&](const Region2& region) {
+    for (const Polygon2& polygon : region.polygons) {
+      add_ring(polygon.outer);
+      for (const Ring2& hole : polygon.holes) add_ring(hole);
+    }
+  };
+  for (const LightShadows& light : result.lights) {
+    const FaceShadow& shadow = light.faces[r];
+    for (const Region2* region : {&shadow.shadow, &shadow.umbra, &shadow.penumbra, &shadow.lit})
+      add_region(*region);
+    for (const OccluderShadow& occluder : shadow.occluders) {
+      add_ring(occluder.polygon);
+      occluders.push_back(&occluder);
+    }
+  }
+  std::vector<double> areas(occluders.size());
+  for_each_index(
+      occluders.size(), occluders.size() > 64,
+      [&](std::size_t k) { areas[k] = world_area(convex_region(occluders[k]->polygon), face); },
+      16);
+  for (std::size_t k = 0; k < occluders.size(); ++k) output.occluder_area[occluders[k]] = areas[k];
+  output.rounded.resize(points.size());
+  for_each_index(
+      points.size(), points.size() > 256,
+      [&](std::size_t k) {
+        const RationalPoint3 world = face.frame.to_world(CGAL::exact(*points[k]));
+        for (int i = 0; i < 3; ++i) output.rounded[k][i] = rounded(world[i]);
+      },
+      64);
+  return output;
+}
+
 // The entry of "faces" for receiver r; members in key order.
 void emit_face(JsonEmitter& out, const Scene& scene, const ShadowResult& result, std::size_t r,
                const ShadowJsonOptions& options) {
   const Object& object = scene.objects[result.receivers[r].object];
   const Face& face = object.solid.faces()[result.receivers[r].face];
+  const FaceOutput output = prepare_output(face, result, r);
   out.begin_object();
   out.key("area");
   out.number(world_area(face_region(face), face));
   out.key("boundary");
-  emit_ring(out, face.ring, face, false);
+  emit_ring(out, face.ring, output, false);
   if (options.exact) {
     out.key("exact");
     out.begin_object();
     out.key("boundary");
-    emit_ring(out, face.ring, face, true);
+    emit_ring(out, face.ring, output, true);
     out.key("plane");
     emit_plane(out, face.plane, true);
     out.end_object();
@@ -344,7 +420,8 @@ void emit_face(JsonEmitter& out, const Scene& scene, const ShadowResult& result,
   out.key("lights");
   out.begin_array();
   for (const LightShadows& shadows : result.lights)
-    emit_light(out, scene.lights[shadows.light].name, shadows.faces[r], scene, face, options.exact);
+    emit_light(out, scene.lights[shadows.light].name, shadows.faces[r], scene, output,
+               options.exact);
   out.end_array();
   out.key("object");
   out.string(object.name);
