@@ -21,6 +21,7 @@
 
 #include "convex_hull_2.h"
 #include "penumbra/geometry/convex_polyhedron.h"
+#include "penumbra/geometry/dyadic_plane.h"
 #include "penumbra/geometry/geometry_error.h"
 #include "small_hull.h"
 
@@ -51,10 +52,9 @@ std::optional<std::vector<FastPoint>> as_doubles(const std::vector<Point3>& poin
   std::vector<FastPoint> doubles;
   doubles.reserve(points.size());
   for (const Point3& p : points) {
-    const auto& approx = p.approx();
-    if (!approx.x().is_point() || !approx.y().is_point() || !approx.z().is_point())
-      return std::nullopt;
-    doubles.emplace_back(approx.x().inf(), approx.y().inf(), approx.z().inf());
+    const auto x = double_coordinates(p);
+    if (!x) return std::nullopt;
+    doubles.emplace_back((*x)[0], (*x)[1], (*x)[2]);
   }
   return doubles;
 }
