@@ -79,6 +79,7 @@ PatchMesh PatchMesh::subdivide(const Scene& scene, double patch_size) {
     for (int c = 0; c < 3; ++c) reflectance[c] = material.reflectance * material.color[c];
     const auto& faces = body.solid.faces();
     for (std::size_t f = 0; f < faces.size(); ++f) {
+      if (!body.receives(f)) continue;  // inside a closed mesh
       const Face& face = faces[f];
       FaceGrid grid;
       grid.object = static_cast<std::uint32_t>(object);
@@ -196,8 +197,14 @@ std::vector<std::array<std::uint32_t, 3>> PatchMesh::triangles(
 std::optional<std::uint32_t> PatchMesh::locate(std::uint32_t object, std::uint32_t face,
                                                const Vec3d& point) const {
   if (object >= first_grid_.size()) return {};
-  const std::size_t g = first_grid_[object] + face;
-  if (g >= grids_.size() || grids_[g].object != object || grids_[g].face != face) return {};
+  std::size_t g = first_grid_[object] + face;
+  const auto is_it = [&](std::size_t k) {
+    return k < grids_.size() && grids_[k].object == object && grids_[k].face == face;
+  };
+  // A face without patches (the inner side of a closed mesh's piece) shifts the object's
+  // later grids down by one.
+  if (!is_it(g) && face > 0 && is_it(g - 1)) --g;
+  if (!is_it(g)) return {};
   const FaceGrid& grid = grids_[g];
   const Vec3d d = point - grid.origin;
   const auto cell_index = [](double s, double origin, double step, int count) {

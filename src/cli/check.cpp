@@ -54,7 +54,7 @@ int run_check(const std::string& scene_path, const std::string& golden_path,
   std::set<std::string> objects;
   if (!receivers.empty()) {
     const std::vector<std::size_t> selected = select_objects(scene, receivers);
-    for (std::size_t object : selected) objects.insert(scene.objects[object].name);
+    for (std::size_t object : selected) objects.insert(scene.objects[object].face_owner());
     options.receivers = faces_of_objects(scene, selected);
   }
   ShadowResult result = compute_shadows(scene, options);

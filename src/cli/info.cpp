@@ -47,13 +47,44 @@ int run_info(const std::string& path) {
             << "objects " << scene.objects.size() << ", faces " << faces << ", vertices "
             << vertices << ", lights " << scene.lights.size() << ", materials "
             << scene.materials.size() - 1 << "\n";
-  // Each object's lines written on its own thread (rational strings cost), printed in order.
+  if (!scene.mesh_faces.empty()) {
+    std::size_t pieces = 0;
+    for (const Object& object : scene.objects) pieces += !object.part.empty();
+    std::cout << "mesh faces " << scene.mesh_faces.size() << " (non-convex parts' faces, one entry "
+              << "per receiving side), cut into " << pieces << " convex pieces\n";
+  }
+  // Each object's lines written on its own thread (rational strings cost), printed in order;
+  // a mesh part that is not convex is listed once, by its faces, at its first piece.
   std::vector<std::string> texts(scene.objects.size());
   for_each_index(
       scene.objects.size(), true,
       [&](std::size_t k) {
         const Object& object = scene.objects[k];
         std::ostringstream out;
+        if (!object.part.empty()) {
+          if (k > 0 && scene.objects[k - 1].part == object.part) return;
+          std::size_t first = kNoMeshFace;
+          for (std::size_t m : object.mesh_faces) first = std::min(first, m);
+          std::size_t last = first;
+          while (last < scene.mesh_faces.size() && scene.mesh_faces[last].part == object.part)
+            ++last;
+          std::size_t count = 0;
+          for (std::size_t j = k; j < scene.objects.size() && scene.objects[j].part == object.part;
+               ++j)
+            ++count;
+          out << "\nobject " << object.part << " (mesh, material "
+              << scene.materials[object.material].name << "): " << last - first << " faces, "
+              << count << " convex pieces\n";
+          for (std::size_t m = first; m < last; ++m) {
+            const MeshFace& face = scene.mesh_faces[m];
+            out << "  face " << face.index << ": " << face.outer.size() << " vertices, "
+                << face.holes.size() << " holes, " << face.pieces.size() << " pieces, ";
+            print_plane(out, face.plane);
+            out << "\n";
+          }
+          texts[k] = out.str();
+          return;
+        }
         out << "\nobject " << object.name << " (" << object.kind
             << (object.solid.is_flat() ? ", two-sided" : "") << ", material "
             << scene.materials[object.material].name << "): " << object.solid.faces().size()

@@ -16,19 +16,18 @@ void ShadowCsvWriter::faces(const ShadowFaceBlock& block) {
   const Scene& scene = block.scene();
   const ShadowResult& result = block.result();
   for (std::size_t r = block.first(); r < block.first() + block.size(); ++r) {
-    const Object& object = scene.objects[result.receivers[r].object];
-    const Face& face = object.solid.faces()[result.receivers[r].face];
+    const ReceivingFace face = receiving_face(scene, result, r);
     // The areas the JSON document gives (world_area of each region).
-    const double area = world_area(face_region(face), face);
+    const double area = world_area(face.area, face.frame);
     for (const LightShadows& light : result.lights) {
       const FaceShadow& shadow = light.faces[r];
-      csv.text(object.name).integer(static_cast<long long>(result.receivers[r].face));
+      csv.text(face.object).integer(static_cast<long long>(face.face));
       csv.text(scene.lights[light.light].name).number(area);
       if (shadow.beyond_range) {
         csv.blank().blank().blank();
       } else {
-        const double shadowed = world_area(shadow.shadow, face);
-        csv.number(shadowed).number(world_area(shadow.lit, face));
+        const double shadowed = world_area(shadow.shadow, face.frame);
+        csv.number(shadowed).number(world_area(shadow.lit, face.frame));
         csv.number(area > 0 ? 100 * shadowed / area : 0.0);
       }
       csv.boolean(shadow.faces_away).boolean(shadow.beyond_range);
@@ -40,8 +39,8 @@ void ShadowCsvWriter::faces(const ShadowFaceBlock& block) {
       if (shadow.beyond_range)
         csv.blank().blank();
       else
-        csv.number(world_area(shadow.linear ? shadow.umbra : shadow.shadow, face))
-            .number(shadow.linear ? world_area(shadow.penumbra, face) : 0.0);
+        csv.number(world_area(shadow.linear ? shadow.umbra : shadow.shadow, face.frame))
+            .number(shadow.linear ? world_area(shadow.penumbra, face.frame) : 0.0);
       csv.boolean(shadow.joint_occlusion);
       csv.end_row();
     }

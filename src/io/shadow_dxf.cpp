@@ -119,7 +119,7 @@ void ShadowDxfWriter::faces(const ShadowFaceBlock& block) {
   for (const nlohmann::json& face : block.entries()) {
     const auto& plane = face.at("plane");
     const Vec3d normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
-    dxf.polyline("faces", face.at("boundary"), normal);
+    for (const nlohmann::json* ring : boundary_rings(face)) dxf.polyline("faces", *ring, normal);
     for (const auto& light : face.at("lights")) {
       if (light.value("beyond_range", false)) continue;
       const std::string name = light.at("light");

@@ -61,7 +61,8 @@ void emit_unit(JsonEmitter& out, const Vector3& v) {
 // across threads (a ground under a city has 10^5 of them), world maps a point's identity
 // to its slot.
 struct FaceOutput {
-  const Face& face;
+  const ReceivingFace& face;
+  Ring2 ring;  // the outer ring's points in the frame
   std::unordered_map<std::size_t, std::size_t> world;
   std::vector<std::array<double, 3>> rounded;
   std::unordered_map<const OccluderShadow*, double> occluder_area;  // m^2, computed alike
@@ -70,14 +71,14 @@ struct FaceOutput {
 // the ring's points in the world: a face vertex as it is, any other point computed in
 // rationals from its frame coordinates (no lazy construction made for output).
 void emit_ring(JsonEmitter& out, const Ring2& ring, const FaceOutput& output, bool exact) {
-  const Face& face = output.face;
+  const ReceivingFace& face = output.face;
   out.begin_array();
   for (const Point2& p : ring) {
-    const auto vertex = std::find_if(face.ring.begin(), face.ring.end(), [&](const Point2& q) {
+    const auto vertex = std::find_if(output.ring.begin(), output.ring.end(), [&](const Point2& q) {
       return CGAL::identical(p, q) || p == q;
     });
-    if (vertex != face.ring.end()) {
-      const Point3& world = face.vertices[static_cast<std::size_t>(vertex - face.ring.begin())];
+    if (vertex != output.ring.end()) {
+      const Point3& world = face.outer[static_cast<std::size_t>(vertex - output.ring.begin())];
       if (exact)
         emit_exact_point(out, CGAL::exact(world));
       else
@@ -114,7 +115,7 @@ void emit_rings(JsonEmitter& out, const Polygon2& polygon, const FaceOutput& fac
 void emit_region(JsonEmitter& out, const Region2& region, const FaceOutput& face, bool exact) {
   out.begin_object();
   out.key("area");
-  out.number(world_area(region, face.face));
+  out.number(world_area(region, face.face.frame));
   out.key("polygons");
   out.begin_array();
   for (const Polygon2& polygon : region.polygons) {
@@ -195,16 +196,28 @@ void format_member(std::string& out, const std::string& key, const json& value, 
   format(out, value, depth + 1);
 }
 
+std::vector<const json*> boundary_rings(const json& face) {
+  const json& boundary = face.at("boundary");
+  if (boundary.is_array()) return {&boundary};
+  std::vector<const json*> rings{&boundary.at("outer")};
+  for (const json& hole : boundary.at("holes")) rings.push_back(&hole);
+  return rings;
+}
+
 std::string format_json(const json& document) {
   std::string out;
   format(out, document, 0);
   return out + "\n";
 }
 
-double world_area(const Region2& region, const Face& face) {
-  const double uu = rounded(face.frame.squared_u());
-  const double vv = rounded(face.frame.squared_v());
-  return rounded(region.area) * std::sqrt(uu * vv);
+double world_area(const Exact& area, const FaceFrame& frame) {
+  const double uu = rounded(frame.squared_u());
+  const double vv = rounded(frame.squared_v());
+  return rounded(area) * std::sqrt(uu * vv);
+}
+
+double world_area(const Region2& region, const FaceFrame& frame) {
+  return world_area(region.area, frame);
 }
 
 json shadow_header_json(const Scene& scene, const ShadowResult& result,
@@ -244,7 +257,7 @@ void emit_occluder(JsonEmitter& out, const Scene& scene, const OccluderShadow& o
   const auto area = face.occluder_area.find(&occluder);
   out.number(area != face.occluder_area.end()
                  ? area->second
-                 : world_area(convex_region(occluder.polygon), face.face));
+                 : world_area(convex_region(occluder.polygon), face.face.frame));
   const bool linear = occluder.linear_case.has_value();
   if (linear) {
     out.key("case");
@@ -338,12 +351,45 @@ void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& sha
   out.end_object();
 }
 
+// a world ring of exact points.
+void emit_world_ring(JsonEmitter& out, const std::vector<Point3>& ring, bool exact) {
+  out.begin_array();
+  for (const Point3& p : ring)
+    if (exact)
+      emit_exact_point(out, CGAL::exact(p));
+    else
+      emit_point(out, p);
+  out.end_array();
+}
+
+// the face's boundary: its ring, or for a face of a mesh part {"holes": [...], "outer": [...]}.
+void emit_boundary(JsonEmitter& out, const ReceivingFace& face, bool exact) {
+  if (!face.holes) {
+    emit_world_ring(out, face.outer, exact);
+    return;
+  }
+  out.begin_object();
+  out.key("holes");
+  out.begin_array();
+  for (const auto& hole : *face.holes) emit_world_ring(out, hole, exact);
+  out.end_array();
+  out.key("outer");
+  emit_world_ring(out, face.outer, exact);
+  out.end_object();
+}
+
 // the fewest occluders for which a face's world points and areas are computed ahead.
 constexpr std::size_t kCachedOccluders = 32;
 
 // returns the face ready to be written: the world doubles of every point of its shadows.
-FaceOutput prepare_output(const Face& face, const ShadowResult& result, std::size_t r) {
-  FaceOutput output{face, {}, {}, {}};
+FaceOutput prepare_output(const ReceivingFace& face, const Ring2* ring, const ShadowResult& result,
+                          std::size_t r) {
+  FaceOutput output{face, {}, {}, {}, {}};
+  if (ring) {
+    output.ring = *ring;
+  } else {
+    for (const Point3& p : face.outer) output.ring.push_back(face.frame.to_frame(p));
+  }
   // Worth it only for a face under many shadows; a small face writes its points directly.
   std::size_t occluder_count = 0;
   for (const LightShadows& light : result.lights) occluder_count += light.faces[r].occluders.size();
@@ -372,7 +418,9 @@ FaceOutput prepare_output(const Face& face, const ShadowResult& result, std::siz
   std::vector<double> areas(occluders.size());
   for_each_index(
       occluders.size(), occluders.size() > 64,
-      [&](std::size_t k) { areas[k] = world_area(convex_region(occluders[k]->polygon), face); },
+      [&](std::size_t k) {
+        areas[k] = world_area(convex_region(occluders[k]->polygon), face.frame);
+      },
       16);
   for (std::size_t k = 0; k < occluders.size(); ++k) output.occluder_area[occluders[k]] = areas[k];
   output.rounded.resize(points.size());
@@ -389,25 +437,27 @@ FaceOutput prepare_output(const Face& face, const ShadowResult& result, std::siz
 // The entry of "faces" for receiver r; members in key order.
 void emit_face(JsonEmitter& out, const Scene& scene, const ShadowResult& result, std::size_t r,
                const ShadowJsonOptions& options) {
-  const Object& object = scene.objects[result.receivers[r].object];
-  const Face& face = object.solid.faces()[result.receivers[r].face];
-  const FaceOutput output = prepare_output(face, result, r);
+  const ReceivingFace face = receiving_face(scene, result, r);
+  const Receiver& receiver = result.receivers[r];
+  const Ring2* ring =
+      face.holes ? nullptr : &scene.objects[receiver.object].solid.faces()[receiver.face].ring;
+  const FaceOutput output = prepare_output(face, ring, result, r);
   out.begin_object();
   out.key("area");
-  out.number(world_area(face_region(face), face));
+  out.number(world_area(face.area, face.frame));
   out.key("boundary");
-  emit_ring(out, face.ring, output, false);
+  emit_boundary(out, face, false);
   if (options.exact) {
     out.key("exact");
     out.begin_object();
     out.key("boundary");
-    emit_ring(out, face.ring, output, true);
+    emit_boundary(out, face, true);
     out.key("plane");
     emit_plane(out, face.plane, true);
     out.end_object();
   }
   out.key("face");
-  out.integer(result.receivers[r].face);
+  out.integer(face.face);
   out.key("frame");
   out.begin_object();
   out.key("origin");
@@ -424,7 +474,7 @@ void emit_face(JsonEmitter& out, const Scene& scene, const ShadowResult& result,
                options.exact);
   out.end_array();
   out.key("object");
-  out.string(object.name);
+  out.string(face.object);
   out.key("plane");
   emit_plane(out, face.plane, false);
   out.end_object();

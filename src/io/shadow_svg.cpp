@@ -59,9 +59,14 @@ void add_region(FaceDrawing& drawing, const json& region, const std::string& sty
 std::optional<FaceDrawing> draw_face(const json& face, const std::vector<std::string>& lights,
                                      const Projection& project, double depth, bool loops) {
   FaceDrawing drawing{depth, {}};
-  const auto outline = project_ring(face.at("boundary"), project);
+  const auto rings = boundary_rings(face);
+  const auto outline = project_ring(*rings.front(), project);
   if (!outline) return std::nullopt;
-  drawing.shapes.push_back({{*outline}, "fill=\"#f4f4f4\" stroke=\"#333\" stroke-width=\"1\""});
+  Shape boundary{{*outline},
+                 "fill=\"#f4f4f4\" fill-rule=\"evenodd\" stroke=\"#333\" stroke-width=\"1\""};
+  for (std::size_t k = 1; k < rings.size(); ++k)
+    if (auto hole = project_ring(*rings[k], project)) boundary.rings.push_back(*hole);
+  drawing.shapes.push_back(std::move(boundary));
   for (const auto& light : face.at("lights")) {
     if (light.value("beyond_range", false)) continue;
     const auto index = std::find(lights.begin(), lights.end(), light.at("light")) - lights.begin();
@@ -158,7 +163,7 @@ void ShadowSvgWriter::begin(const json& header, std::size_t) {
     d.depth_of = [](const json& face) -> std::optional<double> {
       if (face.at("plane")[2].get<double>() <= 0) return std::nullopt;
       double top = -INFINITY;
-      for (const auto& p : face.at("boundary")) top = std::max(top, p[2].get<double>());
+      for (const auto& p : *boundary_rings(face).front()) top = std::max(top, p[2].get<double>());
       return -top;
     };
   } else if (view_ == SvgView::camera) {
@@ -174,12 +179,13 @@ void ShadowSvgWriter::begin(const json& header, std::size_t) {
     d.depth_of = [=](const json& face) -> std::optional<double> {
       const auto& plane = face.at("plane");
       const Vec3d normal{plane[0].get<double>(), plane[1].get<double>(), plane[2].get<double>()};
-      const Vec3d first = face.at("boundary")[0].get<Vec3d>();
+      const json& outer = *boundary_rings(face).front();
+      const Vec3d first = outer[0].get<Vec3d>();
       if (dot(normal, eye - first) <= 0) return std::nullopt;
       Vec3d centre{0, 0, 0};
-      for (const auto& p : face.at("boundary"))
+      for (const auto& p : outer)
         for (int i = 0; i < 3; ++i)
-          centre[i] += p[i].get<double>() / static_cast<double>(face.at("boundary").size());
+          centre[i] += p[i].get<double>() / static_cast<double>(outer.size());
       return length(centre - eye);
     };
   }

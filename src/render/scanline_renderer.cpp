@@ -113,6 +113,7 @@ struct ScanlineRenderer::Impl {
     ShadowOptions options;
     options.parallel = parallel;
     options.occluders_beyond_range = true;
+    options.unite_mesh_faces = false;  // the pieces are drawn
     options.receivers.emplace();
     for (std::size_t object = 0; object < scene.objects.size(); ++object)
       for (std::size_t face = 0; face < scene.objects[object].solid.faces().size(); ++face)

@@ -8,10 +8,11 @@
 #include <sstream>
 
 #include "json_cursor.h"
+#include "mesh_parts.h"
 #include "penumbra/base/input_error.h"
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/geometry_error.h"
-#include "penumbra/scene/mesh_file.h"
+#include "penumbra/scene/model_import.h"
 #include "sphere_points.h"
 
 namespace penumbra {
@@ -171,8 +172,11 @@ class SceneReader {
     }
     if (kind.empty())
       cursor.fail("an object needs one of \"box\", \"convex\", \"polygon\", \"mesh\", \"sphere\"");
-    cursor.warn_unknown_keys(
-        {"name", "material", "box", "convex", "polygon", "mesh", "sphere", "segments"});
+    if (kind == "mesh")
+      cursor.warn_unknown_keys({"name", "material", "mesh", "up", "scale", "transform", "snap"});
+    else
+      cursor.warn_unknown_keys(
+          {"name", "material", "box", "convex", "polygon", "mesh", "sphere", "segments"});
 
     Object object;
     object.kind = kind;
@@ -221,32 +225,71 @@ class SceneReader {
       });
       object.sphere = sphere;
     } else {
-      read_mesh_object(shape, std::move(object));
+      read_mesh_object(cursor, shape, std::move(object));
       return;
     }
     scene_.objects.push_back(std::move(object));
   }
 
-  void read_mesh_object(const JsonCursor& shape, Object object) {
+  // reads the placement keys of a mesh object (docs/scene-format.md, "Placement").
+  static Placement read_placement(const JsonCursor& cursor) {
+    Placement placement;
+    if (const auto up = cursor.find("up")) {
+      const std::string axis = up->string();
+      if (axis != "y" && axis != "z") up->fail("the up axis is \"z\" (the default) or \"y\"");
+      placement.y_up = axis == "y";
+    }
+    if (const auto scale = cursor.find("scale")) placement.scale = scale->positive_number();
+    if (const auto snap = cursor.find("snap")) placement.snap = snap->non_negative_number();
+    if (const auto transform = cursor.find("transform")) {
+      const auto rows = transform->elements();
+      if (rows.size() != 16) transform->fail("a transform is 16 numbers (4 x 4, row-major)");
+      std::array<double, 16> matrix{};
+      for (std::size_t k = 0; k < 16; ++k) matrix[k] = rows[k].number();
+      if (matrix[12] != 0 || matrix[13] != 0 || matrix[14] != 0 || matrix[15] != 1)
+        transform->fail("the last row of a transform must be 0, 0, 0, 1");
+      placement.transform = matrix;
+    }
+    return placement;
+  }
+
+  // reads a real model (docs/scene-format.md, "Mesh import"): each part becomes a convex
+  // object when it is a closed convex solid, and otherwise the convex pieces of its faces.
+  void read_mesh_object(const JsonCursor& cursor, const JsonCursor& shape, Object object) {
+    const Placement placement = read_placement(cursor);
     const std::filesystem::path path = scene_.file.parent_path() / shape.string();
-    std::vector<ConvexPolyhedron> parts;
+    ImportedModel model;
     try {
-      parts = convex_parts(read_mesh(path));
+      model = import_model(path, placement);
     } catch (const InputError& e) {
-      // Name both the mesh file's problem and where the scene referenced it.
+      // Name both the model's problem and where the scene referenced it.
       shape.fail(e.what());
     }
-    if (parts.empty()) shape.fail("the mesh " + path.string() + " has no faces");
-    if (parts.size() == 1) {
-      object.solid = std::move(parts.front());
-      scene_.objects.push_back(std::move(object));
-      return;
-    }
+    if (const std::string repaired = detail::repair_summary(model.repairs); !repaired.empty())
+      scene_.warnings.push_back(file_ + ": " + shape.path() + ": " + path.filename().string() +
+                                ": " + repaired);
+    const bool own_material = cursor.has("material");
+    std::vector<detail::MeshPartObjects> parts(model.parts.size());
+    for_each_index(model.parts.size(), true, [&](std::size_t k) {
+      parts[k] = detail::mesh_part_objects(model.parts[k], path.string());
+    });
     for (std::size_t k = 0; k < parts.size(); ++k) {
-      Object part = object;
-      part.name = object.name + "#" + std::to_string(k);
-      part.solid = std::move(parts[k]);
-      scene_.objects.push_back(std::move(part));
+      const ModelPart& part = model.parts[k];
+      const std::string name =
+          model.parts.size() == 1 ? object.name : object.name + "/" + part.name;
+      if (model.parts.size() > 1 && !object_names_.insert(name).second)
+        (cursor.has("name") ? cursor.at("name") : cursor)
+            .fail("the part name \"" + name + "\" is taken by another object");
+      Object base = object;
+      base.name = name;
+      if (!own_material && part.colour) {
+        Material material;
+        material.name = name;
+        for (int i = 0; i < 3; ++i) material.color[i] = (*part.colour)[i];
+        base.material = scene_.materials.size();
+        scene_.materials.push_back(material);
+      }
+      detail::add_mesh_part(scene_, base, part, std::move(parts[k]));
     }
   }
 

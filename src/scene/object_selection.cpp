@@ -20,7 +20,7 @@ std::vector<std::size_t> select_objects(const Scene& scene, const std::string& p
     if (pattern.empty()) throw InputError("", option, "an empty object name in '" + patterns + "'");
     bool matched = false;
     for (std::size_t k = 0; k < scene.objects.size(); ++k)
-      if (fnmatch(pattern.c_str(), scene.objects[k].name.c_str(), 0) == 0) {
+      if (fnmatch(pattern.c_str(), scene.objects[k].face_owner().c_str(), 0) == 0) {
         chosen[k] = 1;
         matched = true;
       }

@@ -54,6 +54,23 @@ Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& s
   return region_of(set);
 }
 
+Region2 unite_regions(const std::vector<Region2>& regions) {
+  std::vector<PolygonWithHoles> parts;
+  for (const Region2& region : regions)
+    for (const Polygon2& polygon : region.polygons) {
+      PolygonWithHoles part(Polygon(polygon.outer.begin(), polygon.outer.end()));
+      for (const Ring2& hole : polygon.holes) part.add_hole(Polygon(hole.begin(), hole.end()));
+      parts.push_back(std::move(part));
+    }
+  if (parts.empty()) return {};
+  PolygonSet set;
+  if (parts.size() == 1)
+    set.insert(parts.front());
+  else
+    set.join(parts.begin(), parts.end());
+  return region_of(set);
+}
+
 std::vector<std::vector<std::size_t>> touching_groups(const std::vector<Ring2>& rings) {
   // Union-find over the pairs whose boxes (rounded outward) meet and whose closures meet.
   std::vector<std::size_t> parent(rings.size());

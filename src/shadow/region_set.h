@@ -13,6 +13,9 @@ namespace penumbra::detail {
 // counter-clockwise rings in subtract.
 Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& subtract = {});
 
+// returns the union of regions (each canonical, in one frame).
+Region2 unite_regions(const std::vector<Region2>& regions);
+
 // returns the groups of rings whose closures form connected sets (two rings are joined
 // when they have a point in common, touching included), each group increasing, the
 // groups in the order of their first ring: rings in different groups are strictly apart.

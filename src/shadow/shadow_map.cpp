@@ -4,6 +4,7 @@
 #include <chrono>
 #include <numeric>
 
+#include "mesh_face_shadow.h"
 #include "penumbra/base/input_error.h"
 #include "penumbra/base/parallel.h"
 #include "penumbra/shadow/linear_face_shadow.h"
@@ -56,18 +57,38 @@ class LightShading {
   template <class FacesAway>
   void cull(const std::optional<LightingSphere>& sphere, bool linear, FacesAway&& away) {
     if (sphere) result_.stats.radius = sphere->radius();
+    std::vector<std::size_t> far;
     for (std::size_t r = 0; r < receivers_.size(); ++r) {
       const Face& receiving = face(receivers_[r]);
       if (away(r, receiving)) continue;
-      if (sphere && sphere->beyond(receiving)) {
-        result_.faces[r].beyond_range = true;
-        result_.faces[r].linear = linear;
-        ++result_.stats.beyond_range;
-        far_.push_back(r);
-      } else {
+      if (sphere && sphere->beyond(receiving))
+        far.push_back(r);
+      else
         active_.push_back(r);
-      }
     }
+    // The pieces of a mesh face are computed alike: all of them when one is within range.
+    std::vector<char> face_active(scene_.mesh_faces.size(), 0);
+    for (std::size_t r : active_) {
+      const std::size_t m = mesh_face_of(receivers_[r]);
+      if (m != kNoMeshFace) face_active[m] = 1;
+    }
+    for (std::size_t r : far) {
+      const std::size_t m = mesh_face_of(receivers_[r]);
+      if (m != kNoMeshFace && face_active[m]) {
+        active_.push_back(r);
+        continue;
+      }
+      result_.faces[r].beyond_range = true;
+      result_.faces[r].linear = linear;
+      ++result_.stats.beyond_range;
+      far_.push_back(r);
+    }
+    std::sort(active_.begin(), active_.end());
+  }
+
+  std::size_t mesh_face_of(const Receiver& receiver) const {
+    const Object& object = scene_.objects[receiver.object];
+    return object.mesh_faces.empty() ? kNoMeshFace : object.mesh_faces[receiver.face];
   }
 
   // returns, for each receiver slot in slots, its candidate occluders: the broad phase's
@@ -247,6 +268,84 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   return result;
 }
 
+// Documents report a mesh face once (docs/shadows.md, "Faces of real models"): the receivers
+// that are pieces of one MeshFace become one slot, its shadow maps united from theirs, and the
+// slots are put back in canonical order (by owner name, then face number).
+void unite_mesh_faces(const Scene& scene, const std::vector<std::size_t>& rank,
+                      ShadowResult& result) {
+  const std::size_t count = result.receivers.size();
+  std::vector<std::size_t> slot_of_face(scene.mesh_faces.size(), kNoMeshFace);
+  std::vector<std::vector<std::size_t>> members;  // per new slot, the old receivers
+  std::vector<std::size_t> slot_face;             // per new slot, its MeshFace or kNoMeshFace
+  for (std::size_t r = 0; r < count; ++r) {
+    const Object& object = scene.objects[result.receivers[r].object];
+    const std::size_t m =
+        object.mesh_faces.empty() ? kNoMeshFace : object.mesh_faces[result.receivers[r].face];
+    if (m != kNoMeshFace && slot_of_face[m] != kNoMeshFace) {
+      members[slot_of_face[m]].push_back(r);
+      continue;
+    }
+    if (m != kNoMeshFace) slot_of_face[m] = members.size();
+    members.push_back({r});
+    slot_face.push_back(m);
+  }
+  // Canonical order: the owner's name, then the face's number.
+  const auto owner = [&](std::size_t slot) -> const std::string& {
+    return slot_face[slot] != kNoMeshFace
+               ? scene.mesh_faces[slot_face[slot]].part
+               : scene.objects[result.receivers[members[slot][0]].object].name;
+  };
+  const auto number = [&](std::size_t slot) {
+    return slot_face[slot] != kNoMeshFace ? scene.mesh_faces[slot_face[slot]].index
+                                          : result.receivers[members[slot][0]].face;
+  };
+  std::vector<std::size_t> order(members.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const int c = owner(a).compare(owner(b));
+    return c != 0 ? c < 0 : number(a) < number(b);
+  });
+
+  std::vector<Receiver> receivers;
+  std::vector<std::size_t> mesh_faces;
+  for (std::size_t slot : order) {
+    receivers.push_back(result.receivers[members[slot][0]]);
+    mesh_faces.push_back(slot_face[slot]);
+  }
+  for (LightShadows& light : result.lights) {
+    std::vector<FaceShadow> faces(order.size());
+    for_each_index(order.size(), true, [&](std::size_t k) {
+      const std::size_t slot = order[k];
+      if (slot_face[slot] == kNoMeshFace) {
+        faces[k] = std::move(light.faces[members[slot][0]]);
+        return;
+      }
+      const MeshFace& face = scene.mesh_faces[slot_face[slot]];
+      if (face.pieces.size() == 1 && members[slot].size() == 1) {
+        faces[k] = std::move(light.faces[members[slot][0]]);  // the piece is the face
+        return;
+      }
+      std::vector<std::pair<const FaceShadow*, const FaceFrame*>> pieces;
+      for (std::size_t r : members[slot]) {
+        const Receiver& piece = result.receivers[r];
+        pieces.push_back(
+            {&light.faces[r], &scene.objects[piece.object].solid.faces()[piece.face].frame});
+      }
+      faces[k] = detail::unite_pieces(pieces, face.frame);
+      std::stable_sort(faces[k].occluders.begin(), faces[k].occluders.end(),
+                       [&](const OccluderShadow& a, const OccluderShadow& b) {
+                         return rank[a.occluder] < rank[b.occluder];
+                       });
+    });
+    light.faces = std::move(faces);
+    light.stats.faces = order.size();
+    light.stats.faces_away = 0;
+    for (const FaceShadow& face : light.faces) light.stats.faces_away += face.faces_away;
+  }
+  result.receivers = std::move(receivers);
+  result.mesh_faces = std::move(mesh_faces);
+}
+
 }  // namespace
 
 std::vector<Receiver> faces_of_objects(const Scene& scene,
@@ -254,7 +353,7 @@ std::vector<Receiver> faces_of_objects(const Scene& scene,
   std::vector<Receiver> faces;
   for (std::size_t object : objects)
     for (std::size_t face = 0; face < scene.objects[object].solid.faces().size(); ++face)
-      faces.push_back({object, face});
+      if (scene.objects[object].receives(face)) faces.push_back({object, face});
   return faces;
 }
 
@@ -287,9 +386,7 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
                                        }),
                            result.receivers.end());
   } else {
-    for (std::size_t object : by_name)
-      for (std::size_t f = 0; f < scene.objects[object].solid.faces().size(); ++f)
-        result.receivers.push_back({object, f});
+    result.receivers = faces_of_objects(scene, by_name);
   }
 
   std::vector<std::size_t> lights;
@@ -310,7 +407,20 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
     result.lights.push_back(position_of(scene.lights[light])
                                 ? shade_scene(scene, result.receivers, rank, light, options)
                                 : shade_linear(scene, result.receivers, rank, light, options));
+  if (options.unite_mesh_faces && !scene.mesh_faces.empty()) unite_mesh_faces(scene, rank, result);
   return result;
+}
+
+ReceivingFace receiving_face(const Scene& scene, const ShadowResult& result, std::size_t r) {
+  const std::size_t m = result.mesh_faces.empty() ? kNoMeshFace : result.mesh_faces[r];
+  if (m != kNoMeshFace) {
+    const MeshFace& face = scene.mesh_faces[m];
+    return {face.part, face.index, face.plane, face.frame, face.outer, &face.holes, face.area};
+  }
+  const Object& object = scene.objects[result.receivers[r].object];
+  const Face& face = object.solid.faces()[result.receivers[r].face];
+  return {object.name, result.receivers[r].face, face.plane, face.frame, face.vertices, nullptr,
+          face.area};
 }
 
 }  // namespace penumbra

@@ -50,7 +50,7 @@ BOOST_AUTO_TEST_CASE(info_prints_counts_and_exact_planes) {
   BOOST_TEST(contains(result.out, "  face 3: 4 vertices, plane [0, 0, 1, 0]"));
   // The tetrahedron's slanted face x + y + z = 1, scaled to unit largest component.
   BOOST_TEST(contains(result.out, "plane [1, 1, 1, -1]"));
-  BOOST_TEST(contains(result.out, "object chair#1 (mesh"));
+  BOOST_TEST(contains(result.out, "object chair/back (mesh"));
   BOOST_TEST(contains(result.out, "light tube (linear)"));
 }
 

@@ -14,7 +14,7 @@ BOOST_AUTO_TEST_SUITE(load_scene)
 BOOST_AUTO_TEST_CASE(every_object_kind_loads_as_an_exact_convex_solid) {
   const Scene scene = penumbra::load_scene(test::fixture("scenes/every-kind.json"));
   BOOST_TEST(scene.warnings.empty());
-  // The chair mesh has two convex components: chair#0 (seat) and chair#1 (back).
+  // The chair model has two parts, both closed convex solids: chair/seat and chair/back.
   BOOST_TEST_REQUIRE(scene.objects.size() == 7u);
 
   const Object& floor = *scene.find_object("floor");
@@ -33,12 +33,15 @@ BOOST_AUTO_TEST_CASE(every_object_kind_loads_as_an_exact_convex_solid) {
   BOOST_TEST(panel.solid.is_flat());
   BOOST_TEST(panel.solid.faces().size() == 2u);
 
-  // Canonical part order: the seat's smallest vertex (0,0,0.42) precedes the back's (0,0.40,0.47).
-  const Object* seat = scene.find_object("chair#0");
-  const Object* back = scene.find_object("chair#1");
+  // Parts named by the file's objects; coordinates snapped to the micrometre grid, so the
+  // file's 0.42 is exactly 42/100 (not the double nearest to it).
+  const Object* seat = scene.find_object("chair/seat");
+  const Object* back = scene.find_object("chair/back");
   BOOST_TEST_REQUIRE((seat && back));
-  BOOST_TEST((seat->solid.vertices().front() == Point3(0, 0, 0.42)));
-  BOOST_TEST((back->solid.vertices().front() == Point3(0, 0.40, 0.47)));
+  BOOST_TEST(seat->kind == "mesh");
+  BOOST_TEST((seat->solid.vertices().front() == Point3(0, 0, Exact(42) / 100)));
+  BOOST_TEST((back->solid.vertices().front() == Point3(0, Exact(40) / 100, Exact(47) / 100)));
+  BOOST_TEST(scene.mesh_faces.empty());  // convex parts are solids, not pieces
   BOOST_TEST(back->solid.faces().size() == 6u);
 
   const Object& tetra = *scene.find_object("tetra");

@@ -99,12 +99,18 @@ class ShadowJsonWriter : public ShadowDocumentSink {
   std::size_t written_ = 0, faces_ = 0;
 };
 
+// returns the rings of a face entry's "boundary": the ring of an object's face, or the outer
+// ring and then the holes of a face of a mesh part ({"outer": ..., "holes": [...]}).
+std::vector<const nlohmann::json*> boundary_rings(const nlohmann::json& face);
+
 // formats a document for files: objects indented one level per depth, arrays that
 // hold no objects (points, rings) on one line, so that golden files stay small and
 // diff by line.
 std::string format_json(const nlohmann::json& document);
 
-// returns the world area of a region of face (frame area times |u| |v|), in m^2.
-double world_area(const Region2& region, const Face& face);
+// returns the world area of a region of a face with the given frame (frame area times
+// |u| |v|), in m^2; the second form from the frame area itself.
+double world_area(const Region2& region, const FaceFrame& frame);
+double world_area(const Exact& area, const FaceFrame& frame);
 
 }  // namespace penumbra::io

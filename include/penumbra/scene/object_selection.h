@@ -12,9 +12,9 @@
 
 namespace penumbra {
 
-// returns the indices (increasing) of the objects of scene whose names match one of the
-// patterns. Throws InputError naming option when the list is empty or a pattern matches
-// no object.
+// returns the indices (increasing) of the objects of scene whose names (for a piece of a mesh
+// face, its part's name) match one of the patterns. Throws InputError naming option when the
+// list is empty or a pattern matches no object.
 std::vector<std::size_t> select_objects(const Scene& scene, const std::string& patterns,
                                         const std::string& option = "--receivers");
 

@@ -40,13 +40,43 @@ struct Sphere {
   int segments;  // longitude divisions of the tessellation; latitude gets half
 };
 
+// Faces of mesh parts that are not convex solids (docs/scene-format.md, "Mesh import") are
+// cut into convex pieces, each an object of its own (a two-sided flat polygon), so that every
+// verb sees convex occluders and receivers; documents unite the pieces again per face.
+constexpr std::size_t kNoMeshFace = static_cast<std::size_t>(-1);
+
 struct Object {
-  std::string name;      // unique; a mesh with k > 1 convex parts gives name#0 .. name#(k-1)
+  std::string name;      // unique; a piece of a mesh face is "<part>#<k>"
   std::string kind;      // "box", "convex", "polygon", "mesh" or "sphere"
   std::size_t material;  // index into Scene::materials
   ConvexPolyhedron solid;
   std::optional<Sphere> sphere;
   std::string json_path;  // where it was defined, e.g. "objects[3]"
+  // a convex piece of a mesh face: the part's name ("house/wing"), and for each of the
+  // solid's two faces the MeshFace it lies on (kNoMeshFace: the inner side of a closed
+  // solid's face, which receives nothing). Empty for other objects.
+  std::string part;
+  std::vector<std::size_t> mesh_faces;
+
+  // true when face f receives light: every face, but the inner sides of closed meshes.
+  bool receives(std::size_t f) const { return mesh_faces.empty() || mesh_faces[f] != kNoMeshFace; }
+  // the name documents use for the object's faces: the part of a piece, the name otherwise.
+  const std::string& face_owner() const { return part.empty() ? name : part; }
+};
+
+// One side of a planar face of a mesh part that is not a convex solid: a polygon, possibly
+// non-convex and with holes, made of convex pieces (objects). A face of a closed solid has
+// one side (its outside); a face of an open surface has two, numbered one after the other.
+struct MeshFace {
+  std::string part;   // the part's name, as documents name the face's owner
+  std::size_t index;  // the face's number within its part
+  Plane3 plane;       // positive side = the side that receives
+  FaceFrame frame;    // the face's own frame: the single piece's, or at outer[0] along outer
+  std::vector<Point3> outer;  // counter-clockwise seen from the positive side, from its smallest
+  std::vector<std::vector<Point3>> holes;  // clockwise, each from its smallest point, sorted
+  Exact area;                              // in frame units
+  // the pieces: (object, face of the object lying on this side), in the object order.
+  std::vector<std::pair<std::size_t, std::size_t>> pieces;
 };
 
 struct PointLight {
@@ -91,6 +121,7 @@ struct Scene {
   std::filesystem::path file;       // the scene file; relative paths resolve beside it
   std::vector<Material> materials;  // materials[0] is the default material
   std::vector<Object> objects;
+  std::vector<MeshFace> mesh_faces;  // the faces that the pieces among objects make up
   std::vector<Light> lights;
   std::vector<SunPlacement> suns;  // the lights given by place and time (above the horizon or not)
   double north_deg = 0;  // true north from the model's +Y, counter-clockwise seen from above

@@ -35,6 +35,10 @@ struct ShadowOptions {
   // candidates less those a plane certainly separates from conv(face, source). A superset,
   // so illuminance computed with it stays exact (the renderer's need).
   bool occluders_beyond_range = false;
+  // the convex pieces of each mesh face (scene.h, MeshFace) united into the face, as
+  // documents report it (docs/shadows.md, "Faces of real models"); false keeps the pieces
+  // (the renderer draws them).
+  bool unite_mesh_faces = true;
 };
 
 struct ShadowStats {
@@ -56,9 +60,27 @@ struct LightShadows {
 
 struct ShadowResult {
   std::vector<Receiver> receivers;  // object (index into Scene::objects) and face, canonical order
+  // with ShadowOptions::unite_mesh_faces, per receiver the MeshFace it stands for (the
+  // receiver is then its first piece's face), kNoMeshFace for a face of an object.
+  std::vector<std::size_t> mesh_faces;
   std::vector<LightShadows> lights;
   std::vector<std::string> warnings;  // problems worth reporting that did not stop the work
 };
+
+// What documents say of a receiving face: who owns it, its number and its exact geometry.
+// For a face of a mesh part, the face (possibly non-convex with holes) its pieces make up.
+struct ReceivingFace {
+  const std::string& object;  // the object's name, or the mesh part's
+  std::size_t face;
+  const Plane3& plane;
+  const FaceFrame& frame;
+  const std::vector<Point3>& outer;               // counter-clockwise seen from outside
+  const std::vector<std::vector<Point3>>* holes;  // clockwise; nullptr for an object's face
+  const Exact& area;                              // in frame units
+};
+
+// returns receiver r of result as documents name and draw it.
+ReceivingFace receiving_face(const Scene& scene, const ShadowResult& result, std::size_t r);
 
 // computes the shadow maps of every face of scene (or of options.receivers) for its
 // lights. Throws InputError when options.light names no light, when options.receivers
@@ -66,8 +88,9 @@ struct ShadowResult {
 // shadows a face (docs/linear-shadows.md).
 ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options = {});
 
-// every face of the objects (indices into scene.objects), as ShadowOptions::receivers
-// (`--receivers`, scene/object_selection.h).
+// every receiving face of the objects (indices into scene.objects), as
+// ShadowOptions::receivers (`--receivers`, scene/object_selection.h); the inner sides of closed
+// meshes' pieces receive nothing and are left out.
 std::vector<Receiver> faces_of_objects(const Scene& scene, const std::vector<std::size_t>& objects);
 
 }  // namespace penumbra

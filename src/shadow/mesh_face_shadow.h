@@ -1,0 +1,34 @@
+#pragma once
+// The shadow map of a face of a mesh part from those of its convex pieces (docs/shadows.md,
+// "Faces of real models"): each piece's regions, occluder polygons and loops are carried
+// exactly from the piece's frame into the face's (an affine map with rational
+// coefficients: both frames lie in the face's plane), and the regions are united.
+
+#include <utility>
+#include <vector>
+
+#include "penumbra/geometry/face_frame.h"
+#include "penumbra/shadow/face_shadow.h"
+
+namespace penumbra::detail {
+
+// The exact affine map between two frames of one plane: frame coordinates in from to frame
+// coordinates in to.
+class FrameMap {
+ public:
+  FrameMap(const FaceFrame& from, const FaceFrame& to);
+  Point2 operator()(const Point2& p) const;
+  Ring2 ring(const Ring2& ring) const;          // mapped point by point (not made canonical)
+  Region2 region(const Region2& region) const;  // mapped and made canonical
+
+ private:
+  Rational s0_, su_, sv_, t0_, tu_, tv_;  // s' = s0 + su s + sv t, t' = t0 + tu s + tv t
+};
+
+// returns the shadow map of a face made of pieces: for each piece its shadow map and its
+// face's frame; frame is the face's. Flags are the pieces' (faces_away, beyond_range: all
+// of them; the others: any); occluders follow the pieces' order, each piece's in its own.
+FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const FaceFrame*>>& pieces,
+                        const FaceFrame& frame);
+
+}  // namespace penumbra::detail

@@ -1,0 +1,191 @@
+// Faces cut into convex pieces (geometry/convex_pieces.h), checked against the polygon
+// itself: the pieces are strictly convex, counter-clockwise seen from the plane's positive
+// side, use only the rings' points, their areas add up to the polygon's (exact shoelace
+// sums), and random rational points of the plane lie inside the polygon exactly when they
+// lie inside one piece — an exact oracle that needs no triangulation.
+
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <set>
+
+#include "penumbra/base/random.h"
+#include "penumbra/geometry/convex_pieces.h"
+
+using namespace penumbra;
+
+namespace {
+
+using Ring = std::vector<Point3>;
+
+// The polygon in the plane z = h given by xy rings, or turned into a slanted plane by
+// (x, y) -> (x, y, x + 2y + h) when slanted (the pieces are then checked in the xy shadow).
+struct Case {
+  const char* name;
+  std::vector<std::array<double, 2>> outer;               // counter-clockwise
+  std::vector<std::vector<std::array<double, 2>>> holes;  // clockwise
+};
+
+Point3 lift(const std::array<double, 2>& p, bool slanted) {
+  return Point3(p[0], p[1], slanted ? p[0] + 2 * p[1] + 1 : 1);
+}
+
+Point2 flat(const Point3& p) {
+  return Point2(p.x(), p.y());
+}
+
+Exact twice_area(const std::vector<Point2>& ring) {
+  Exact sum = 0;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Point2& a = ring[k];
+    const Point2& b = ring[(k + 1) % ring.size()];
+    sum += a.x() * b.y() - b.x() * a.y();
+  }
+  return sum;
+}
+
+// -1 outside, 0 on the boundary, 1 inside a simple ring (crossing number, exact).
+int side_of_ring(const std::vector<Point2>& ring, const Point2& q) {
+  bool inside = false;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Point2& a = ring[k];
+    const Point2& b = ring[(k + 1) % ring.size()];
+    if (CGAL::orientation(a, b, q) == CGAL::COLLINEAR &&
+        CGAL::collinear_are_ordered_along_line(a, q, b))
+      return 0;
+    if ((a.y() > q.y()) != (b.y() > q.y()) &&
+        CGAL::orientation(a, b, q) == (b.y() > a.y() ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN))
+      inside = !inside;
+  }
+  return inside ? 1 : -1;
+}
+
+const std::vector<Case> cases = {
+    {"square", {{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}},
+    {"L", {{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 10}, {0, 10}}, {}},
+    {"comb",
+     {{0, 0},
+      {7, 0},
+      {7, 3},
+      {6, 3},
+      {6, 1},
+      {5, 1},
+      {5, 3},
+      {4, 3},
+      {4, 1},
+      {3, 1},
+      {3, 3},
+      {2, 3},
+      {2, 1},
+      {1, 1},
+      {1, 3},
+      {0, 3}},
+     {}},
+    {"window wall", {{0, 0}, {6, 0}, {6, 3}, {0, 3}}, {{{2, 1}, {2, 2.2}, {4, 2.2}, {4, 1}}}},
+    {"two holes",
+     {{0, 0}, {9, 0}, {9, 5}, {0, 5}},
+     {{{1, 1}, {1, 4}, {3, 4}, {3, 1}}, {{5, 1}, {6.5, 4}, {8, 1}}}},
+    {"hole touching the outer ring",
+     {{0, 0}, {6, 0}, {6, 6}, {0, 6}},
+     {{{3, 0}, {2, 2}, {4, 2}}}},  // the hole's corner (3, 0) lies inside the outer ring's edge
+    {"star", {{0, 0}, {3, 1}, {6, 0}, {5, 3}, {6, 6}, {3, 5}, {0, 6}, {1, 3}}, {}},
+};
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(convex_pieces_suite)
+
+BOOST_AUTO_TEST_CASE(pieces_tile_the_polygon_exactly) {
+  SplitMix64 random(14);
+  for (const Case& c : cases)
+    for (bool slanted : {false, true}) {
+      BOOST_TEST_CONTEXT(c.name << (slanted ? " (slanted)" : "")) {
+        Ring outer;
+        for (const auto& p : c.outer) outer.push_back(lift(p, slanted));
+        std::vector<Ring> holes;
+        for (const auto& hole : c.holes) {
+          holes.emplace_back();
+          for (const auto& p : hole) holes.back().push_back(lift(p, slanted));
+        }
+        const Plane3 plane(outer[0], outer[1], outer[outer.size() - 1]);  // corner at (0,0) convex
+        BOOST_TEST_REQUIRE(CGAL::is_positive(plane.c()));  // seen from above: counter-clockwise
+
+        const auto pieces = convex_pieces(plane, outer, holes);
+        std::set<Point3> ring_points(outer.begin(), outer.end());
+        for (const Ring& hole : holes) ring_points.insert(hole.begin(), hole.end());
+
+        std::vector<std::vector<Point2>> flat_pieces;
+        Exact pieces_area = 0;
+        for (const Ring& piece : pieces) {
+          std::vector<Point2> ring;
+          for (const Point3& p : piece) {
+            BOOST_TEST(plane.has_on(p));
+            BOOST_TEST(ring_points.count(p) == 1u);  // no new points
+            ring.push_back(flat(p));
+          }
+          // Convex and counter-clockwise: no right turn anywhere.
+          for (std::size_t k = 0; k < ring.size(); ++k)
+            BOOST_TEST(CGAL::orientation(ring[k], ring[(k + 1) % ring.size()],
+                                         ring[(k + 2) % ring.size()]) != CGAL::RIGHT_TURN);
+          BOOST_TEST(CGAL::is_positive(twice_area(ring)));
+          pieces_area += twice_area(ring);
+          flat_pieces.push_back(std::move(ring));
+        }
+        std::vector<Point2> flat_outer;
+        for (const Point3& p : outer) flat_outer.push_back(flat(p));
+        Exact polygon_area = twice_area(flat_outer);
+        std::vector<std::vector<Point2>> flat_holes;
+        for (const Ring& hole : holes) {
+          flat_holes.emplace_back();
+          for (const Point3& p : hole) flat_holes.back().push_back(flat(p));
+          polygon_area += twice_area(flat_holes.back());  // clockwise: negative
+        }
+        BOOST_TEST((pieces_area == polygon_area));
+
+        // Points on a 1/64 grid (so many fall on edges and are skipped) and random ones.
+        std::size_t inside = 0, compared = 0;
+        for (int k = 0; k < 3000; ++k) {
+          const Point2 q(std::floor(random.uniform() * 12 * 64 - 64) / 64,
+                         std::floor(random.uniform() * 12 * 64 - 64) / 64);
+          int in_polygon = side_of_ring(flat_outer, q);
+          for (const auto& hole : flat_holes) {
+            const int in_hole = side_of_ring(hole, q);
+            if (in_hole == 0) in_polygon = 0;
+            if (in_hole == 1 && in_polygon == 1) in_polygon = -1;
+          }
+          int in_pieces = 0;
+          bool on_piece_boundary = false;
+          for (const auto& piece : flat_pieces) {
+            const int side = side_of_ring(piece, q);
+            on_piece_boundary = on_piece_boundary || side == 0;
+            in_pieces += side == 1;
+          }
+          if (in_polygon == 0 || on_piece_boundary) continue;
+          ++compared;
+          inside += in_polygon == 1;
+          BOOST_TEST(in_pieces == (in_polygon == 1 ? 1 : 0));
+        }
+        BOOST_TEST(inside > 100u);
+        BOOST_TEST(compared - inside > 100u);
+      }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(convex_faces_stay_whole_and_reflex_corners_need_pieces) {
+  // Hertel-Mehlhorn merging keeps a convex face whole and gives an L (one reflex corner) two
+  // pieces. The comb has 6 reflex corners; each needs a diagonal and a diagonal serves at
+  // most two, so at least 3 diagonals and 4 pieces. A diagonal the greedy merge keeps would
+  // make a reflex angle at one of its ends, a reflex corner of the comb, and a corner has
+  // at most two such diagonals: at most 12 diagonals, 13 pieces (2r + 1).
+  const auto count = [](const Case& c) {
+    Ring outer;
+    for (const auto& p : c.outer) outer.push_back(lift(p, false));
+    return convex_pieces(Plane3(0, 0, 1, -1), outer, {}).size();
+  };
+  BOOST_TEST(count(cases[0]) == 1u);
+  BOOST_TEST(count(cases[1]) == 2u);
+  BOOST_TEST(count(cases[2]) >= 4u);
+  BOOST_TEST(count(cases[2]) <= 13u);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
