@@ -69,6 +69,10 @@ void mark_nesting(Cdt& cdt) {
   }
 }
 
+bool point_less(const Point3& a, const Point3& b) {
+  return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
+}
+
 std::size_t position(const std::vector<Vertex>& cycle, Vertex v) {
   return static_cast<std::size_t>(std::find(cycle.begin(), cycle.end(), v) - cycle.begin());
 }
@@ -98,14 +102,22 @@ bool merge_if_convex(std::vector<Vertex>& a, std::vector<Vertex>& b, Vertex p, V
 std::vector<std::vector<Point3>> convex_pieces(const Plane3& plane,
                                                const std::vector<Point3>& outer,
                                                const std::vector<std::vector<Point3>>& holes) {
+  // The triangulation depends on the order points are inserted in (cocircular points): each
+  // ring from its lexicographically smallest point, holes in the order of those points.
+  const auto from_smallest = [](std::vector<Point3> ring) {
+    std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end(), point_less), ring.end());
+    return ring;
+  };
+  std::vector<std::vector<Point3>> rings{from_smallest(outer)};
+  for (const auto& hole : holes) rings.push_back(from_smallest(hole));
+  std::sort(rings.begin() + 1, rings.end(),
+            [](const auto& a, const auto& b) { return point_less(a.front(), b.front()); });
   const Projection project(plane.orthogonal_vector());
   std::vector<Point3> points;
   Cdt cdt;
   const auto add_ring = [&](const std::vector<Point3>& ring) {
     std::vector<Vertex> vertices;
-    for (const Point3& p : ring) {
-      vertices.push_back(cdt.insert(project(p)));
-    }
+    for (const Point3& p : ring) vertices.push_back(cdt.insert(project(p)));
     for (std::size_t k = 0; k < ring.size(); ++k) {
       const Vertex v = vertices[k];
       if (v->info().point == 0) {
@@ -117,8 +129,7 @@ std::vector<std::vector<Point3>> convex_pieces(const Plane3& plane,
       if (vertices[k] != vertices[(k + 1) % vertices.size()])
         cdt.insert_constraint(vertices[k], vertices[(k + 1) % vertices.size()]);
   };
-  add_ring(outer);
-  for (const auto& hole : holes) add_ring(hole);
+  for (const auto& ring : rings) add_ring(ring);
   mark_nesting(cdt);
 
   // Every triangle inside starts as a piece of its own.

@@ -10,8 +10,8 @@
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/shadow_polygon.h"
 #include "penumbra/visibility/lighting_sphere.h"
+#include "penumbra/visibility/swept_region.h"
 #include "receiver_clip.h"
-#include "swept_region.h"
 
 namespace penumbra {
 namespace {
@@ -124,7 +124,7 @@ class LightShading {
     const auto far_candidates = candidates(far_, candidates_of);
     for_each_index(far_.size(), options_.parallel, [&](std::size_t a) {
       const std::size_t r = far_[a];
-      const detail::SweptRegion swept(face(receivers_[r]), q1, q2);
+      const SweptRegion swept(face(receivers_[r]), q1, q2);
       for (std::size_t o : far_candidates[a])
         if (!swept.separated_from(*solids_[o])) result_.faces[r].possible_occluders.push_back(o);
     });

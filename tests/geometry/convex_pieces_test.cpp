@@ -188,4 +188,42 @@ BOOST_AUTO_TEST_CASE(convex_faces_stay_whole_and_reflex_corners_need_pieces) {
   BOOST_TEST(count(cases[2]) <= 13u);
 }
 
+BOOST_AUTO_TEST_CASE(pieces_depend_on_the_polygon_not_on_where_its_rings_start) {
+  // A regular-ish octagon (cocircular points: many Delaunay triangulations) with two holes,
+  // given with every ring rotated and the holes swapped: the same pieces, in the same order.
+  const Case& c = cases[4];
+  Ring outer;
+  for (const auto& p : c.outer) outer.push_back(lift(p, true));
+  std::vector<Ring> holes;
+  for (const auto& hole : c.holes) {
+    holes.emplace_back();
+    for (const auto& p : hole) holes.back().push_back(lift(p, true));
+  }
+  const Plane3 plane(outer[0], outer[1], outer[3]);
+  const auto pieces = convex_pieces(plane, outer, holes);
+  for (std::size_t shift = 1; shift < outer.size(); ++shift) {
+    Ring rotated = outer;
+    std::rotate(rotated.begin(), rotated.begin() + static_cast<std::ptrdiff_t>(shift),
+                rotated.end());
+    std::vector<Ring> swapped(holes.rbegin(), holes.rend());
+    for (Ring& hole : swapped)
+      std::rotate(hole.begin(), hole.begin() + static_cast<std::ptrdiff_t>(shift % hole.size()),
+                  hole.end());
+    BOOST_TEST((convex_pieces(plane, rotated, swapped) == pieces), "shift " << shift);
+  }
+  Ring octagon;
+  for (const auto& p : std::vector<std::array<double, 2>>{
+           {2, 0}, {4, 0}, {6, 2}, {6, 4}, {4, 6}, {2, 6}, {0, 4}, {0, 2}})
+    octagon.push_back(lift(p, false));
+  const Plane3 flat_plane(0, 0, 1, -1);
+  const auto octagon_pieces = convex_pieces(flat_plane, octagon, {});
+  BOOST_TEST(octagon_pieces.size() == 1u);  // convex: whole, whichever triangulation
+  for (std::size_t shift = 1; shift < octagon.size(); ++shift) {
+    Ring rotated = octagon;
+    std::rotate(rotated.begin(), rotated.begin() + static_cast<std::ptrdiff_t>(shift),
+                rotated.end());
+    BOOST_TEST((convex_pieces(flat_plane, rotated, {}) == octagon_pieces));
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

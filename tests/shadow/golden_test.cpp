@@ -30,6 +30,12 @@ const char* const goldens[] = {"every-kind",
                                "linear-fig6",
                                "linear-degenerate",
                                "linear-joint",
+                               "mesh-canopy",
+                               "mesh-courtyard",
+                               "mesh-noisy",
+                               "mesh-staircase",
+                               "mesh-through-hole",
+                               "mesh-window",
                                "office"};
 
 std::string check_command(const std::string& scene, const std::string& golden) {

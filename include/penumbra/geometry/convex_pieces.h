@@ -16,8 +16,8 @@ namespace penumbra {
 // returns convex pieces whose union is the polygon on plane bounded by outer
 // (counter-clockwise seen from plane's positive side) less the holes (clockwise), their
 // interiors disjoint, each counter-clockwise seen from the positive side. Every ring point
-// must lie on plane; rings must not cross (they may touch at points). The order is
-// deterministic: it depends only on the rings as given.
+// must lie on plane; rings must not cross (they may touch at points). The pieces and their
+// order depend only on the polygon: not on where its rings start nor on the holes' order.
 std::vector<std::vector<Point3>> convex_pieces(const Plane3& plane,
                                                const std::vector<Point3>& outer,
                                                const std::vector<std::vector<Point3>>& holes);

@@ -2,10 +2,11 @@
 // The broad phase of shadow detection (Nishita 1985 section 3.2, last paragraph:
 // reduce the pairs tested): an occluder can shadow a face only if it meets the
 // region swept by the segments from the face to the source, conv(face, source) —
-// the prism toward the sun, cut where it leaves the scene's bounding box. Boxes
-// around those regions and around the objects are intersected with CGAL's
-// box_intersection_d. Every box is rounded outward, so no pair that can interact
-// is dropped.
+// the prism toward the sun (visibility/swept_region.h). A bounding volume hierarchy
+// over the objects' boxes (rounded outward) is walked with each face's region, leaving
+// the boxes and then the objects that a supporting plane of the region certainly
+// separates (interval arithmetic): no pair that can interact is dropped, and a model of
+// 10^5 faces is queried in O(log n) boxes per face rather than tested pair by pair.
 
 #include <cstddef>
 #include <vector>
@@ -21,8 +22,8 @@ struct Receiver {
 };
 
 // returns, for each receiver, the sorted indices of the objects (other than the
-// receiver's own) whose bounding box meets the bounding box of the receiver's
-// region toward light.
+// receiver's own) that no plane certainly separates from the receiver's region toward
+// light.
 std::vector<std::vector<std::size_t>> candidate_occluders(
     const std::vector<const ConvexPolyhedron*>& objects, const std::vector<Receiver>& receivers,
     const LightPosition& light);
