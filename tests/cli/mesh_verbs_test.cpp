@@ -50,8 +50,8 @@ BOOST_AUTO_TEST_CASE(every_verb_runs_on_real_models) {
   BOOST_TEST_REQUIRE(info.status == 0, info.err);
   BOOST_TEST(info.out.find("object block (mesh") != std::string::npos, info.out);
 
-  const auto shadows = run_penumbra("shadows " + s + " --exact -o " + out("loops.json") + " --svg " +
-                                    out("loops.svg") + " --dxf " + out("loops.dxf") +
+  const auto shadows = run_penumbra("shadows " + s + " --exact -o " + out("loops.json") +
+                                    " --svg " + out("loops.svg") + " --dxf " + out("loops.dxf") +
                                     " --report " + out("areas.csv"));
   BOOST_TEST_REQUIRE(shadows.status == 0, shadows.err);
   const nlohmann::json document = nlohmann::json::parse(std::ifstream(dir / "loops.json"));
