@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -17,6 +18,47 @@ namespace {
 
 bool point_less(const Point3& a, const Point3& b) {
   return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
+}
+
+// returns the cycle without its collinear points when it is certainly a convex polygon turning
+// counter-clockwise about normal (the points distinct and coplanar): every turn left or straight
+// and every fan triangle from the first point non-negative (so the cycle winds once), seen
+// along the largest component of normal, where projecting keeps or reverses every orientation
+// alike. Nothing when a test fails: the caller's full check then decides (and names the point).
+std::optional<std::vector<Point3>> convex_cycle(const std::vector<Point3>& points,
+                                                const Vector3& normal) {
+  int axis = -1;
+  double largest = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double size = std::abs(CGAL::to_double(normal[k]));
+    if (size > largest && !CGAL::is_zero(normal[k])) largest = size, axis = k;
+  }
+  if (axis < 0) return std::nullopt;
+  const CGAL::Orientation turn =
+      CGAL::is_positive(normal[axis]) ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
+  std::vector<Point2> flat;
+  for (const Point3& p : points) flat.emplace_back(p[(axis + 1) % 3], p[(axis + 2) % 3]);
+  const std::size_t n = flat.size();
+  std::vector<Point3> kept;
+  for (std::size_t k = 0; k < n; ++k) {
+    const CGAL::Orientation o =
+        CGAL::orientation(flat[(k + n - 1) % n], flat[k], flat[(k + 1) % n]);
+    if (o != turn && o != CGAL::COLLINEAR) return std::nullopt;
+    if (o == CGAL::COLLINEAR) {
+      // a straight point between its neighbours is dropped; a spike (turning back) is not convex
+      if (!CGAL::collinear_are_ordered_along_line(flat[(k + n - 1) % n], flat[k],
+                                                  flat[(k + 1) % n]))
+        return std::nullopt;
+      continue;
+    }
+    kept.push_back(points[k]);
+  }
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    const CGAL::Orientation o = CGAL::orientation(flat[0], flat[k], flat[k + 1]);
+    if (o != turn && o != CGAL::COLLINEAR) return std::nullopt;
+  }
+  if (kept.size() < 3) return std::nullopt;
+  return kept;
 }
 
 // returns the coordinates of the points when all are doubles (their intervals single
@@ -166,6 +208,13 @@ ConvexPolyhedron ConvexPolyhedron::flat_polygon(const std::vector<Point3>& cycle
     if (!CGAL::coplanar(points[0], points[1], points[third], points[k]))
       throw GeometryError("the polygon is not planar: this point is off the plane of the others",
                           input_index[k]);
+
+  // Usually the cycle is convex as given (the pieces of a model's faces are): decided by
+  // predicates alone, without the frame and hull below.
+  if (auto front = convex_cycle(points, normal)) {
+    std::vector<Point3> back(front->rbegin(), front->rend());
+    return from_faces({std::move(*front), std::move(back)}, true);
+  }
 
   const FaceFrame frame(points[0], detail::in_plane_direction(normal), normal);
   std::vector<Point2> flat_points;
