@@ -50,21 +50,17 @@ Region2 FrameMap::region(const Region2& region) const {
 }
 
 FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const FaceFrame*>>& pieces,
-                        const FaceFrame& frame) {
+                        const FaceFrame& frame, const std::optional<Region2>& whole) {
   FaceShadow result;
   result.faces_away = result.beyond_range = true;
-  std::vector<Region2> shadow, umbra, penumbra, lit;
+  std::vector<FrameMap> maps;
   for (const auto& [piece, piece_frame] : pieces) {
-    const FrameMap map(*piece_frame, frame);
+    const FrameMap& map = maps.emplace_back(*piece_frame, frame);
     result.faces_away = result.faces_away && piece->faces_away;
     result.beyond_range = result.beyond_range && piece->beyond_range;
     result.linear = result.linear || piece->linear;
     result.source_clipped = result.source_clipped || piece->source_clipped;
     result.joint_occlusion = result.joint_occlusion || piece->joint_occlusion;
-    shadow.push_back(map.region(piece->shadow));
-    umbra.push_back(map.region(piece->umbra));
-    penumbra.push_back(map.region(piece->penumbra));
-    lit.push_back(map.region(piece->lit));
     for (const OccluderShadow& occluder : piece->occluders) {
       OccluderShadow mapped = occluder;
       mapped.polygon = canonical_ring(map.ring(occluder.polygon));
@@ -81,10 +77,33 @@ FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const Fac
   result.possible_occluders.erase(
       std::unique(result.possible_occluders.begin(), result.possible_occluders.end()),
       result.possible_occluders.end());
-  result.shadow = unite_regions(shadow);
-  result.umbra = unite_regions(umbra);
-  result.penumbra = unite_regions(penumbra);
-  result.lit = unite_regions(lit);
+  // A set empty on every piece is empty. Shadow and lit split each computed piece, so one of
+  // them empty on every piece leaves the other whole on every piece: the face.
+  const auto empty_everywhere = [&](Region2 FaceShadow::*member) {
+    return std::all_of(pieces.begin(), pieces.end(),
+                       [&](const auto& piece) { return ((*piece.first).*member).empty(); });
+  };
+  const bool computed = !result.beyond_range &&
+                        std::none_of(pieces.begin(), pieces.end(),
+                                     [](const auto& piece) { return piece.first->beyond_range; });
+  // the union of one set over the pieces, each carried into the face's frame.
+  const auto united = [&](Region2 FaceShadow::*member) {
+    std::vector<Region2> regions;
+    for (std::size_t k = 0; k < pieces.size(); ++k)
+      regions.push_back(maps[k].region((*pieces[k].first).*member));
+    return unite_regions(regions);
+  };
+  const bool no_shadow = empty_everywhere(&FaceShadow::shadow);
+  const bool no_lit = empty_everywhere(&FaceShadow::lit);
+  result.shadow = no_shadow                     ? Region2{}
+                  : no_lit && computed && whole ? *whole
+                                                : united(&FaceShadow::shadow);
+  result.lit = no_lit                           ? Region2{}
+               : no_shadow && computed && whole ? *whole
+                                                : united(&FaceShadow::lit);
+  result.umbra = empty_everywhere(&FaceShadow::umbra) ? Region2{} : united(&FaceShadow::umbra);
+  result.penumbra =
+      empty_everywhere(&FaceShadow::penumbra) ? Region2{} : united(&FaceShadow::penumbra);
   return result;
 }
 

@@ -4,6 +4,7 @@
 // exactly from the piece's frame into the face's (an affine map with rational
 // coefficients: both frames lie in the face's plane), and the regions are united.
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -28,7 +29,9 @@ class FrameMap {
 // returns the shadow map of a face made of pieces: for each piece its shadow map and its
 // face's frame; frame is the face's. Flags are the pieces' (faces_away, beyond_range: all
 // of them; the others: any); occluders follow the pieces' order, each piece's in its own.
+// whole, when given, is the face's region: a set that every piece has whole (a face wholly
+// lit, or wholly in shadow) is then taken as it, without a Boolean union.
 FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const FaceFrame*>>& pieces,
-                        const FaceFrame& frame);
+                        const FaceFrame& frame, const std::optional<Region2>& whole = {});
 
 }  // namespace penumbra::detail

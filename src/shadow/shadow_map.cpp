@@ -268,6 +268,16 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   return result;
 }
 
+// returns the face as a region of its own frame when it has no holes and all its pieces are
+// present (then a union of the pieces' regions that covers the face is this region, and
+// unite_pieces need not compute it); nothing otherwise.
+std::optional<Region2> whole_face(const MeshFace& face, std::size_t present) {
+  if (!face.holes.empty() || present != face.pieces.size()) return std::nullopt;
+  Ring2 ring;
+  for (const Point3& p : face.outer) ring.push_back(face.frame.to_frame(p));
+  return canonical_region({Polygon2{canonical_ring(ring), {}}}, face.area);
+}
+
 // Documents report a mesh face once (docs/shadows.md, "Faces of real models"): the receivers
 // that are pieces of one MeshFace become one slot, its shadow maps united from theirs, and the
 // slots are put back in canonical order (by owner name, then face number).
@@ -331,7 +341,7 @@ void unite_mesh_faces(const Scene& scene, const std::vector<std::size_t>& rank,
         pieces.push_back(
             {&light.faces[r], &scene.objects[piece.object].solid.faces()[piece.face].frame});
       }
-      faces[k] = detail::unite_pieces(pieces, face.frame);
+      faces[k] = detail::unite_pieces(pieces, face.frame, whole_face(face, members[slot].size()));
       std::stable_sort(faces[k].occluders.begin(), faces[k].occluders.end(),
                        [&](const OccluderShadow& a, const OccluderShadow& b) {
                          return rank[a.occluder] < rank[b.occluder];
