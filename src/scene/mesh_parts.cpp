@@ -20,6 +20,12 @@ std::optional<ConvexPolyhedron> convex_solid(const ModelPart& part) {
     if (!face.solid || !face.holes.empty()) return std::nullopt;
     points.insert(points.end(), face.outer.begin(), face.outer.end());
   }
+  // A point strictly outside one face's plane proves the part is not convex: for a small
+  // part that is cheaper than the hull (a building of a few dozen points).
+  if (points.size() <= 64)
+    for (const PlanarFace& face : part.faces)
+      for (const Point3& p : points)
+        if (face.plane.oriented_side(p) == CGAL::ON_POSITIVE_SIDE) return std::nullopt;
   std::optional<ConvexPolyhedron> hull;
   try {
     hull = ConvexPolyhedron::hull(points);
