@@ -3,6 +3,7 @@
 #include "penumbra/geometry/interval.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "penumbra/shadow/contour.h"
 
@@ -175,7 +176,10 @@ std::optional<LinearVolumes> linear_volumes(const ConvexPolyhedron& solid, const
   }
   volumes.kind = LinearCase::A;
   const auto [left, right] = tangent_vertices(solid, q1, q2);
-  CGAL_assertion(!left.empty() && !right.empty());
+  // No vertex on both contours: an end of the source lies in the plane of a flat occluder
+  // (a polygon, a piece of a model's face), which that end sees edge-on. Not supported.
+  if (left.empty() || right.empty())
+    throw std::domain_error("an end of the linear source lies in the plane of a flat occluder");
   volumes.left = left.front();
   volumes.right = right.front();
   std::tie(volumes.penumbra, volumes.umbra) = case_a_volumes(

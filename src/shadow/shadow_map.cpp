@@ -260,7 +260,8 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
                                "' touches or passes through an object that shadows face " +
                                std::to_string(receiver.face) + " of '" +
                                scene.objects[receiver.object].name +
-                               "': not supported (docs/linear-shadows.md)");
+                               "' (or has an end in the plane of a flat one): not supported "
+                               "(docs/linear-shadows.md)");
         }
       });
   result.stats.seconds =

@@ -99,4 +99,21 @@ BOOST_AUTO_TEST_CASE(a_bad_model_writes_nothing_and_exits_2) {
   BOOST_TEST(!std::filesystem::exists(dir / "out.json"));
 }
 
+BOOST_AUTO_TEST_CASE(a_tube_with_an_end_in_the_plane_of_a_flat_occluder_is_refused) {
+  // The tube's end (0.5, 0, 3) lies in the card's plane y = 0, and the card shadows the
+  // floor from the other end: no tangent vertices (docs/linear-shadows.md). Exit 2 with the
+  // light named, no file; before, an unchecked assertion crashed here.
+  const auto dir = penumbra::test::scratch_dir("mesh-verbs-flat-end");
+  std::ofstream(dir / "scene.json") << R"({"penumbra": 1, "objects": [
+      {"name": "floor", "box": {"min": [-5, -5, -1], "max": [5, 5, 0]}},
+      {"name": "card", "polygon": [[0, 0, 1], [1, 0, 1], [1, 0, 2], [0, 0, 2]]}],
+    "lights": [{"name": "tube", "linear": [[0.5, 0, 3], [0.5, 1, 3]], "candela_per_metre": 100}]})";
+  const auto result = run_penumbra("shadows '" + (dir / "scene.json").string() + "' -o '" +
+                                   (dir / "out.json").string() + "'");
+  BOOST_TEST(result.status == 2);
+  BOOST_TEST(result.err.find("lights[0]: the linear source 'tube'") != std::string::npos,
+             result.err);
+  BOOST_TEST(!std::filesystem::exists(dir / "out.json"));
+}
+
 BOOST_AUTO_TEST_SUITE_END()
