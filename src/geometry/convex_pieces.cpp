@@ -1,4 +1,5 @@
 #include "penumbra/geometry/convex_pieces.h"
+#include "penumbra/geometry/point_order.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -69,10 +70,6 @@ void mark_nesting(Cdt& cdt) {
   }
 }
 
-bool point_less(const Point3& a, const Point3& b) {
-  return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
-}
-
 std::size_t position(const std::vector<Vertex>& cycle, Vertex v) {
   return static_cast<std::size_t>(std::find(cycle.begin(), cycle.end(), v) - cycle.begin());
 }
@@ -104,12 +101,9 @@ std::vector<std::vector<Point3>> convex_pieces(const Plane3& plane,
                                                const std::vector<std::vector<Point3>>& holes) {
   // The triangulation depends on the order points are inserted in (cocircular points): each
   // ring from its lexicographically smallest point, holes in the order of those points.
-  const auto from_smallest = [](std::vector<Point3> ring) {
-    std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end(), point_less), ring.end());
-    return ring;
-  };
-  std::vector<std::vector<Point3>> rings{from_smallest(outer)};
-  for (const auto& hole : holes) rings.push_back(from_smallest(hole));
+  std::vector<std::vector<Point3>> rings{outer};
+  rings.insert(rings.end(), holes.begin(), holes.end());
+  for (auto& ring : rings) start_at_smallest(ring);
   std::sort(rings.begin() + 1, rings.end(),
             [](const auto& a, const auto& b) { return point_less(a.front(), b.front()); });
   const Projection project(plane.orthogonal_vector());

@@ -12,13 +12,10 @@
 #include "dyadic_vector.h"
 #include "penumbra/geometry/dyadic_plane.h"
 #include "penumbra/geometry/geometry_error.h"
+#include "penumbra/geometry/point_order.h"
 
 namespace penumbra {
 namespace {
-
-bool point_less(const Point3& a, const Point3& b) {
-  return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
-}
 
 // returns the cycle without its collinear points when it is certainly a convex polygon turning
 // counter-clockwise about normal (the points distinct and coplanar): every turn left or straight
@@ -112,11 +109,6 @@ void build_from_doubles(Face& face, const std::vector<std::array<double, 3>>& x)
     twice = twice + (a[0] * b[1] - b[0] * a[1]);
   }
   face.area = exact_number(Rational(twice) / (2 * uu_rational * vv_rational));
-}
-
-// rotates a cycle so that it starts at its lexicographically smallest point.
-void start_at_smallest(std::vector<Point3>& cycle) {
-  std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end(), point_less), cycle.end());
 }
 
 }  // namespace

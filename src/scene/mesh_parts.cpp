@@ -6,6 +6,7 @@
 #include "penumbra/base/input_error.h"
 #include "penumbra/geometry/convex_pieces.h"
 #include "penumbra/geometry/geometry_error.h"
+#include "penumbra/geometry/point_order.h"
 
 namespace penumbra::detail {
 namespace {
@@ -43,15 +44,6 @@ std::optional<ConvexPolyhedron> convex_solid(const ModelPart& part) {
   return hull;
 }
 
-bool point_less(const Point3& a, const Point3& b) {
-  return CGAL::compare_xyz(a, b) == CGAL::SMALLER;
-}
-
-std::vector<Point3> from_smallest(std::vector<Point3> ring) {
-  std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end(), point_less), ring.end());
-  return ring;
-}
-
 // The MeshFace on plane's positive side with the given rings (counter-clockwise outer,
 // clockwise holes, seen from that side) made of pieces (object, face).
 MeshFace mesh_face(const Scene& scene, const std::string& part, std::size_t index,
@@ -72,8 +64,10 @@ MeshFace mesh_face(const Scene& scene, const std::string& part, std::size_t inde
     return face;
   }
   face.plane = plane;
-  face.outer = from_smallest(outer);
-  for (const auto& hole : holes) face.holes.push_back(from_smallest(hole));
+  face.outer = outer;
+  face.holes = holes;
+  start_at_smallest(face.outer);
+  for (auto& hole : face.holes) start_at_smallest(hole);
   std::sort(face.holes.begin(), face.holes.end(),
             [](const auto& a, const auto& b) { return point_less(a.front(), b.front()); });
   face.frame = FaceFrame(face.outer[0], face.outer[1] - face.outer[0], plane.orthogonal_vector());

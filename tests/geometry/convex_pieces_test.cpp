@@ -30,6 +30,17 @@ Point3 lift(const std::array<double, 2>& p, bool slanted) {
   return Point3(p[0], p[1], slanted ? p[0] + 2 * p[1] + 1 : 1);
 }
 
+// returns the case's outer ring and holes, lifted.
+std::pair<Ring, std::vector<Ring>> lifted(const Case& c, bool slanted) {
+  std::pair<Ring, std::vector<Ring>> rings;
+  for (const auto& p : c.outer) rings.first.push_back(lift(p, slanted));
+  for (const auto& hole : c.holes) {
+    rings.second.emplace_back();
+    for (const auto& p : hole) rings.second.back().push_back(lift(p, slanted));
+  }
+  return rings;
+}
+
 Point2 flat(const Point3& p) {
   return Point2(p.x(), p.y());
 }
@@ -100,13 +111,7 @@ BOOST_AUTO_TEST_CASE(pieces_tile_the_polygon_exactly) {
   for (const Case& c : cases)
     for (bool slanted : {false, true}) {
       BOOST_TEST_CONTEXT(c.name << (slanted ? " (slanted)" : "")) {
-        Ring outer;
-        for (const auto& p : c.outer) outer.push_back(lift(p, slanted));
-        std::vector<Ring> holes;
-        for (const auto& hole : c.holes) {
-          holes.emplace_back();
-          for (const auto& p : hole) holes.back().push_back(lift(p, slanted));
-        }
+        const auto [outer, holes] = lifted(c, slanted);
         const Plane3 plane(outer[0], outer[1], outer[outer.size() - 1]);  // corner at (0,0) convex
         BOOST_TEST_REQUIRE(CGAL::is_positive(plane.c()));  // seen from above: counter-clockwise
 
@@ -189,16 +194,11 @@ BOOST_AUTO_TEST_CASE(convex_faces_stay_whole_and_reflex_corners_need_pieces) {
 }
 
 BOOST_AUTO_TEST_CASE(pieces_depend_on_the_polygon_not_on_where_its_rings_start) {
-  // A regular-ish octagon (cocircular points: many Delaunay triangulations) with two holes,
-  // given with every ring rotated and the holes swapped: the same pieces, in the same order.
+  // A rectangle with two holes, given with every ring rotated and the holes swapped, then an
+  // octagon (cocircular points: many Delaunay triangulations) rotated: the same pieces, in
+  // the same order.
   const Case& c = cases[4];
-  Ring outer;
-  for (const auto& p : c.outer) outer.push_back(lift(p, true));
-  std::vector<Ring> holes;
-  for (const auto& hole : c.holes) {
-    holes.emplace_back();
-    for (const auto& p : hole) holes.back().push_back(lift(p, true));
-  }
+  const auto [outer, holes] = lifted(c, true);
   const Plane3 plane(outer[0], outer[1], outer[3]);
   const auto pieces = convex_pieces(plane, outer, holes);
   for (std::size_t shift = 1; shift < outer.size(); ++shift) {

@@ -26,6 +26,11 @@ std::filesystem::path scene_with_model(const std::string& name, const std::strin
   return dir / "scene.json";
 }
 
+std::string fixture_text(const std::string& relative) {
+  std::ifstream in(test::fixture(relative));
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
 // The world area of a planar polygon with holes, exactly, by the shoelace formula in the
 // coordinate plane the normal is largest across (the projection scales areas by |n_k| / |n|,
 // the same factor for every ring, so the comparison below is of projected areas).
@@ -53,11 +58,8 @@ BOOST_AUTO_TEST_SUITE(mesh_objects)
 BOOST_AUTO_TEST_CASE(a_non_convex_solid_becomes_pieces_receiving_on_its_outside) {
   // notched.obj: a unit cube whose top is a dent of four triangles: 9 faces, none coplanar
   // with another, each one convex piece; the dent makes the part non-convex.
-  const auto path = scene_with_model(
-      "notched.obj", std::string(std::istreambuf_iterator<char>(*std::make_unique<std::ifstream>(
-                                     test::fixture("meshes/notched.obj"))),
-                                 {}));
-  const Scene scene = load_scene(path);
+  const Scene scene =
+      load_scene(scene_with_model("notched.obj", fixture_text("meshes/notched.obj")));
   BOOST_TEST_REQUIRE(scene.objects.size() == 9u);
   BOOST_TEST_REQUIRE(scene.mesh_faces.size() == 9u);
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
@@ -108,11 +110,8 @@ BOOST_AUTO_TEST_CASE(placement_keys_move_the_model_exactly) {
   // chair.obj's seat spans x, y in [0, 0.45], z in [0.42, 0.47]. Scale 2, then Y-up turns
   // (x, y, z) to (x, -z, y), then the transform moves x by 5: the seat's smallest vertex
   // (lexicographic) is (5, -0.94, 0), exactly (the snap makes 0.47 exactly 47/100).
-  const std::string chair(std::istreambuf_iterator<char>(
-                              *std::make_unique<std::ifstream>(test::fixture("meshes/chair.obj"))),
-                          {});
   const Scene scene = load_scene(scene_with_model(
-      "chair.obj", chair,
+      "chair.obj", fixture_text("meshes/chair.obj"),
       ", \"scale\": 2, \"up\": \"y\", \"transform\": [1,0,0,5, 0,1,0,0, 0,0,1,0, 0,0,0,1]"));
   const Object* seat = scene.find_object("m/seat");
   BOOST_TEST_REQUIRE(seat);
