@@ -90,42 +90,13 @@ std::optional<Affine> affine_map(const Number* rows) {
 
 // === Placement
 
-// returns the shortest decimal that rounds to x, as an exact rational: the number as
-// written in a scene file (1e-6 is 1/1000000, not the double nearest it).
-Rational shortest_decimal(double x) {
-  if (!std::isfinite(x)) return Rational(0);
-  char text[64];
-  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
-  const std::string written(text, end);
-  long long mantissa = 0;
-  int exponent = 0;
-  bool fraction = false, negative = false;
-  std::size_t k = 0;
-  for (; k < written.size() && written[k] != 'e'; ++k) {
-    const char c = written[k];
-    if (c == '-') {
-      negative = true;
-    } else if (c == '.') {
-      fraction = true;
-    } else {
-      mantissa = 10 * mantissa + (c - '0');  // at most 17 significant digits
-      if (fraction) --exponent;
-    }
-  }
-  if (k < written.size()) exponent += std::stoi(written.substr(k + 1));
-  Rational value(static_cast<long>(mantissa));
-  for (; exponent > 0; --exponent) value *= 10;
-  for (; exponent < 0; ++exponent) value /= 10;
-  return negative ? Rational(-value) : value;
-}
-
 // The file's coordinates (after its node transforms) to world coordinates: scale, snap,
 // up-axis turn, transform (docs/scene-format.md, "Placement").
 class Placer {
  public:
   Placer(const Placement& placement, const std::string& file)
       : scale_{placement.scale, Rational(placement.scale)},
-        snap_{placement.snap, shortest_decimal(placement.snap)},
+        snap_{grid_step(placement.snap), Rational(grid_step(placement.snap))},
         y_up_(placement.y_up) {
     const auto fail = [&](const std::string& message) {
       throw InputError(file, "placement", message);
@@ -172,10 +143,26 @@ class Placer {
     Rational exact;
   };
 
-  // returns the multiple of the snap grid nearest x, ties away from zero. The double
-  // estimate of x / snap is within 1/32 of the true quotient below 2^46, so one exact
-  // correction step finds the nearest multiple.
+  // returns the largest power of two not above snap (0 for 0): the grid step.
+  static double grid_step(double snap) {
+    if (!(snap > 0) || !std::isfinite(snap)) return snap;
+    int exponent = 0;
+    std::frexp(snap, &exponent);  // snap = f 2^exponent, 1/2 <= f < 1
+    return std::ldexp(1.0, exponent - 1);
+  }
+
+  // returns the multiple of the snap grid nearest x, ties away from zero. A double x is
+  // rounded in doubles (the step is a power of two, so x / step and k step are exact).
+  // Otherwise the double estimate of x / step is within 1/32 of the true quotient below
+  // 2^46, so one exact correction step finds the nearest multiple.
   Rational to_grid(const Rational& x) const {
+    double value = 0;
+    if (exact_double(x, value)) {
+      const double k = std::round(value / snap_.value);
+      if (!(std::abs(k) < 0x1p46))
+        throw std::range_error("a coordinate is too large for the snap grid");
+      return Rational(k * snap_.value);
+    }
     const double estimate = CGAL::to_double(x) / snap_.value;
     if (!(std::abs(estimate) < 0x1p46))
       throw std::range_error("a coordinate is too large for the snap grid");

@@ -1,11 +1,15 @@
 #include "planar_faces.h"
 
+#include "edge_rings.h"
+#include "penumbra/geometry/point_order.h"
+
 #include <CGAL/Polygon_set_2.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 #include <utility>
 
@@ -273,22 +277,6 @@ void drop_collinear(std::vector<Point3>& ring) {
   ring = std::move(kept);
 }
 
-// returns the winding number of the ring around q, a point not on it (exact; the ring may
-// touch itself at vertices, as Polygon_set_2's rings do).
-int winding_number(const Polygon2& ring, const Point2& q) {
-  int winding = 0;
-  for (auto edge = ring.edges_begin(); edge != ring.edges_end(); ++edge) {
-    const Point2& a = edge->source();
-    const Point2& b = edge->target();
-    if (a.y() <= q.y()) {
-      if (b.y() > q.y() && CGAL::orientation(a, b, q) == CGAL::LEFT_TURN) ++winding;
-    } else if (b.y() <= q.y() && CGAL::orientation(a, b, q) == CGAL::RIGHT_TURN) {
-      --winding;
-    }
-  }
-  return winding;
-}
-
 // The triangles of one plane (and material), united exactly in the plane's projection.
 class PlaneUnion {
  public:
@@ -302,6 +290,7 @@ class PlaneUnion {
   // returns the faces covering the triangles (corners counter-clockwise seen from the
   // plane's positive side), each with the number of triangles inside it.
   std::vector<PlanarFace> faces(const std::vector<std::array<int, 3>>& triangles) {
+    if (auto tiled = tiled_faces(triangles)) return in_order(std::move(*tiled));
     std::vector<Polygon2> polygons;
     polygons.reserve(triangles.size());
     for (const auto& t : triangles) {
@@ -343,9 +332,9 @@ class PlaneUnion {
       for (const auto& polygon : polygons) {
         const Point2 centroid = CGAL::centroid(polygon[0], polygon[1], polygon[2]);
         for (std::size_t k = 0; k < pieces.size() && k < result.size(); ++k) {
-          int winding = winding_number(pieces[k].outer_boundary(), centroid);
+          int winding = detail::winding_number(pieces[k].outer_boundary().container(), centroid);
           for (auto hole = pieces[k].holes_begin(); hole != pieces[k].holes_end(); ++hole)
-            winding += winding_number(*hole, centroid);
+            winding += detail::winding_number(hole->container(), centroid);
           if (winding != 0) {
             ++result[k].triangles;
             break;
@@ -353,16 +342,72 @@ class PlaneUnion {
         }
       }
     }
-    return result;
+    return in_order(std::move(result));
   }
 
  private:
+  // returns faces ordered by their outer rings' lexicographically smallest points (the
+  // rings are disjoint, so these differ), whichever way they were found.
+  static std::vector<PlanarFace> in_order(std::vector<PlanarFace> faces) {
+    const auto smallest = [](const PlanarFace& face) {
+      return *std::min_element(face.outer.begin(), face.outer.end(), point_less);
+    };
+    std::sort(faces.begin(), faces.end(), [&](const PlanarFace& a, const PlanarFace& b) {
+      return point_less(smallest(a), smallest(b));
+    });
+    return faces;
+  }
+
+  // the faces when the triangles tile them edge to edge (edge_rings.h), else nothing.
+  std::optional<std::vector<PlanarFace>> tiled_faces(
+      const std::vector<std::array<int, 3>>& triangles) const {
+    std::unordered_map<int, int> local;
+    std::vector<int> global;
+    std::vector<Point2> projected;
+    std::vector<std::array<int, 3>> renumbered;
+    for (const auto& t : triangles) {
+      std::array<int, 3> r;
+      for (int k = 0; k < 3; ++k) {
+        const auto [it, inserted] = local.emplace(t[k], static_cast<int>(global.size()));
+        if (inserted) {
+          const RationalPoint3& p = points_[t[k]];
+          global.push_back(t[k]);
+          projected.push_back(
+              point_from<Point2>(RationalPoint2(p[projection_.first], p[projection_.second])));
+        }
+        r[k] = it->second;
+      }
+      renumbered.push_back(r);
+    }
+    const auto found = detail::edge_ring_faces(renumbered, projected);
+    if (!found) return std::nullopt;
+    const auto lift_ring = [&](const std::vector<int>& ring) {
+      std::vector<Point3> lifted;
+      for (int v : ring) lifted.push_back(epeck_points_[global[v]]);
+      drop_collinear(lifted);
+      return lifted;
+    };
+    std::vector<PlanarFace> result;
+    for (const auto& tiled : *found) {
+      PlanarFace face;
+      face.plane = from_exact<Plane3>(plane_);
+      face.outer = lift_ring(tiled.outer);
+      for (const auto& hole : tiled.holes) {
+        auto ring = lift_ring(hole);
+        if (!ring.empty()) face.holes.push_back(std::move(ring));
+      }
+      face.triangles = tiled.triangles;
+      if (!face.outer.empty()) result.push_back(std::move(face));
+    }
+    return result;
+  }
+
   Point2 project(int v) {
     const RationalPoint3& p = points_[v];
     RationalPoint2 q(p[projection_.first], p[projection_.second]);
     const auto [it, inserted] = lifted_.emplace(q, v);
     if (!inserted && it->second != v) it->second = std::min(it->second, v);
-    return from_exact<Point2>(std::move(q));
+    return point_from<Point2>(std::move(q));
   }
 
   // returns the ring in space: a projected point of a triangle corner is that corner; a
@@ -384,7 +429,7 @@ class PlaneUnion {
       p[axis] =
           -(plane_.d() + n[projection_.first] * exact.x() + n[projection_.second] * exact.y()) /
           n[axis];
-      ring.push_back(from_exact<Point3>(RationalPoint3(p[0], p[1], p[2])));
+      ring.push_back(point_from<Point3>(RationalPoint3(p[0], p[1], p[2])));
     }
     drop_collinear(ring);
     return ring;
@@ -424,7 +469,7 @@ std::vector<PlanarFace> planar_faces(const TriangleSoup& soup, RepairReport& rep
     if (index[f] < 0) {
       index[f] = static_cast<int>(points.size());
       points.push_back(soup.points[f]);
-      epeck_points.push_back(from_exact<Point3>(soup.points[f]));
+      epeck_points.push_back(point_from<Point3>(soup.points[f]));
     }
     return index[f];
   };

@@ -51,6 +51,17 @@ Region2 FrameMap::region(const Region2& region) const {
 
 FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const FaceFrame*>>& pieces,
                         const FaceFrame& frame, const std::optional<Region2>& whole) {
+  // A face of one piece in the piece's own frame (mesh_parts.cpp gives it that frame): its
+  // shadow map is the piece's.
+  const auto sort_unique = [](std::vector<std::size_t>& list) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  };
+  if (pieces.size() == 1 && pieces[0].second->same_as(frame)) {
+    FaceShadow result = *pieces[0].first;
+    sort_unique(result.possible_occluders);
+    return result;
+  }
   FaceShadow result;
   result.faces_away = result.beyond_range = true;
   std::vector<FrameMap> maps;
@@ -73,10 +84,7 @@ FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const Fac
                                      piece->possible_occluders.begin(),
                                      piece->possible_occluders.end());
   }
-  std::sort(result.possible_occluders.begin(), result.possible_occluders.end());
-  result.possible_occluders.erase(
-      std::unique(result.possible_occluders.begin(), result.possible_occluders.end()),
-      result.possible_occluders.end());
+  sort_unique(result.possible_occluders);
   // A set empty on every piece is empty. Shadow and lit split each computed piece, so one of
   // them empty on every piece leaves the other whole on every piece: the face.
   const auto empty_everywhere = [&](Region2 FaceShadow::*member) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <numeric>
 
+#include "back_pieces.h"
 #include "mesh_face_shadow.h"
 #include "penumbra/base/input_error.h"
 #include "penumbra/base/parallel.h"
@@ -189,7 +190,13 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
   if (!position.at_infinity())
     shading.list_far_occluders(position.point(), position.point(), candidates_of);
 
-  const auto candidates = shading.active_candidates(candidates_of);
+  auto candidates = shading.active_candidates(candidates_of);
+  // Pieces of closed parts turned away from the light add no shadow (back_pieces.h).
+  const std::vector<char> back = detail::back_pieces(scene, position);
+  for (auto& list : candidates)
+    list.erase(
+        std::remove_if(list.begin(), list.end(), [&](std::size_t o) { return back[o] != 0; }),
+        list.end());
   // The shadow volume of each occluder depends only on the light: build it once.
   std::vector<char> needed(scene.objects.size(), 0);
   for (const auto& list : candidates)

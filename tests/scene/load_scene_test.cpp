@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "penumbra/scene/load_scene.h"
+#include "snap_grid.h"
 #include "support/fixtures.h"
 
 using namespace penumbra;
@@ -33,14 +34,15 @@ BOOST_AUTO_TEST_CASE(every_object_kind_loads_as_an_exact_convex_solid) {
   BOOST_TEST(panel.solid.is_flat());
   BOOST_TEST(panel.solid.faces().size() == 2u);
 
-  // Parts named by the file's objects; coordinates snapped to the micrometre grid, so the
-  // file's 0.42 is exactly 42/100 (not the double nearest to it).
+  // Parts named by the file's objects; coordinates snapped to the 2^-20 m grid, so the
+  // file's 0.42 is the grid point nearest the float 0.42f.
   const Object* seat = scene.find_object("chair/seat");
   const Object* back = scene.find_object("chair/back");
   BOOST_TEST_REQUIRE((seat && back));
   BOOST_TEST(seat->kind == "mesh");
-  BOOST_TEST((seat->solid.vertices().front() == Point3(0, 0, Exact(42) / 100)));
-  BOOST_TEST((back->solid.vertices().front() == Point3(0, Exact(40) / 100, Exact(47) / 100)));
+  BOOST_TEST((seat->solid.vertices().front() == Point3(0, 0, test::on_default_grid(0.42f))));
+  BOOST_TEST((back->solid.vertices().front() ==
+              Point3(0, test::on_default_grid(0.40f), test::on_default_grid(0.47f))));
   BOOST_TEST(scene.mesh_faces.empty());  // convex parts are solids, not pieces
   BOOST_TEST(back->solid.faces().size() == 6u);
 

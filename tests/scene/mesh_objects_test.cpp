@@ -9,6 +9,7 @@
 
 #include "penumbra/base/input_error.h"
 #include "penumbra/scene/load_scene.h"
+#include "snap_grid.h"
 #include "support/fixtures.h"
 
 using namespace penumbra;
@@ -109,15 +110,16 @@ BOOST_AUTO_TEST_CASE(an_open_face_with_a_hole_receives_on_both_sides) {
 BOOST_AUTO_TEST_CASE(placement_keys_move_the_model_exactly) {
   // chair.obj's seat spans x, y in [0, 0.45], z in [0.42, 0.47]. Scale 2, then Y-up turns
   // (x, y, z) to (x, -z, y), then the transform moves x by 5: the seat's smallest vertex
-  // (lexicographic) is (5, -0.94, 0), exactly (the snap makes 0.47 exactly 47/100).
+  // (lexicographic) is (5, -0.94, 0) on the snap grid (2 x 0.47f rounded to 2^-20 m).
   const Scene scene = load_scene(scene_with_model(
       "chair.obj", fixture_text("meshes/chair.obj"),
       ", \"scale\": 2, \"up\": \"y\", \"transform\": [1,0,0,5, 0,1,0,0, 0,0,1,0, 0,0,0,1]"));
   const Object* seat = scene.find_object("m/seat");
   BOOST_TEST_REQUIRE(seat);
-  BOOST_TEST((seat->solid.vertices().front() == Point3(5, Exact(-94) / 100, 0)));
-  BOOST_TEST(
-      (seat->solid.vertices().back() == Point3(Exact(59) / 10, Exact(-84) / 100, Exact(9) / 10)));
+  BOOST_TEST((seat->solid.vertices().front() == Point3(5, -test::on_default_grid(2.0 * 0.47f), 0)));
+  BOOST_TEST((seat->solid.vertices().back() == Point3(5 + test::on_default_grid(2.0 * 0.45f),
+                                                      -test::on_default_grid(2.0 * 0.42f),
+                                                      test::on_default_grid(2.0 * 0.45f))));
 }
 
 BOOST_AUTO_TEST_CASE(bad_models_name_the_scene_the_object_and_the_file) {

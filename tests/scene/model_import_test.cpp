@@ -16,6 +16,7 @@
 
 #include "penumbra/base/input_error.h"
 #include "penumbra/scene/model_import.h"
+#include "snap_grid.h"
 #include "support/fixtures.h"
 
 using namespace penumbra;
@@ -412,13 +413,14 @@ BOOST_AUTO_TEST_CASE(snapping_makes_a_noisy_slab_exactly_planar) {
   const ImportedModel snapped = import_model(path);
   check_faces(snapped);
   BOOST_TEST(face_count(snapped) == 6u);
-  // 4.37e-08 -> 0, 0.9999999 -> 1, and five single-precision 0.1-ish heights -> 1/10.
+  // 4.37e-08 -> 0, 0.9999999 -> 1, and five single-precision 0.1-ish heights -> one grid
+  // point (0.1f and 0.1000001f are 104857.60 and 104857.71 steps of 2^-20: both 104858).
   BOOST_TEST(snapped.repairs.snapped_coordinates_changed == 7u);
   const PlanarFace* top = face_with_normal(snapped.parts[0], Vector3(0, 0, 1));
   BOOST_TEST_REQUIRE(top != nullptr);
   BOOST_TEST(top->triangles == 4u);
   BOOST_TEST(top->outer.size() == 4u);
-  for (const auto& p : top->outer) BOOST_TEST((p.z() == Exact(1) / 10));
+  for (const auto& p : top->outer) BOOST_TEST((p.z() == test::on_default_grid(0.1000001f)));
   BOOST_TEST((all_points(snapped).count(Point3(0, 0, 0)) == 1u));
 
   Placement off;
@@ -458,7 +460,7 @@ BOOST_AUTO_TEST_CASE(placement_turns_scales_and_transforms_exactly) {
     BOOST_TEST((face.plane.oriented_side(Point3(-0.5, 0.5, 0.5)) == CGAL::ON_NEGATIVE_SIDE));
 }
 
-BOOST_AUTO_TEST_CASE(millimetres_scale_onto_the_decimal_grid) {
+BOOST_AUTO_TEST_CASE(millimetres_scale_onto_the_grid) {
   const auto path =
       write_file("mm.obj",
                  "v 0 0 0\nv 1000 0 0\nv 1000 1000 0\nv 0 1000 0\n"
@@ -472,9 +474,32 @@ BOOST_AUTO_TEST_CASE(millimetres_scale_onto_the_decimal_grid) {
   BOOST_TEST((all_points(import_model(path, placement)).count(Point3(1, 1, 1)) == 0u));
   BOOST_TEST((all_points(import_model(path, placement))
                   .count(Point3(scaled_corner, scaled_corner, scaled_corner)) == 1u));
-  // The 1e-6 grid is the decimal 1/1000000, on which 1 lies.
+  // The 1e-6 grid is 2^-20 m, on which 1 lies (1000 x 0.001 is 1 + 2.1e-17).
   placement.snap = 1e-6;
   BOOST_TEST((all_points(import_model(path, placement)).count(Point3(1, 1, 1)) == 1u));
+}
+
+BOOST_AUTO_TEST_CASE(the_grid_step_is_the_largest_power_of_two_not_above_snap) {
+  // 1234 mm and 700 mm, scaled by the double nearest 1/1000 (so not doubles: rounded
+  // exactly) and by 1 (doubles: rounded in doubles), on grids 1 mm -> 2^-10 m and
+  // 0.3 -> 2^-2 m. Expected: round(x / step) step, ties away from zero, worked here.
+  const auto path = write_file("steps.obj", "v 0 0 0\nv 1234 0 0\nv 0 700 0\nf 1 2 3\n");
+  const auto points_with = [&](double scale, double snap) {
+    Placement placement;
+    placement.scale = scale;
+    placement.snap = snap;
+    return all_points(import_model(path, placement));
+  };
+  const Exact step10 = Exact(1) / 1024;
+  // 1.234 m / 2^-10 = 1263.6 -> 1264; 0.7 m / 2^-10 = 716.8 -> 717.
+  BOOST_TEST((points_with(0.001, 0.001).count(Point3(1264 * step10, 0, 0)) == 1u));
+  BOOST_TEST((points_with(0.001, 0.001).count(Point3(0, 717 * step10, 0)) == 1u));
+  // A step given as a power of two is itself the step.
+  BOOST_TEST((points_with(0.001, 1.0 / 1024).count(Point3(1264 * step10, 0, 0)) == 1u));
+  // 1234 / 0.25 = 4936 exactly; 700 / 0.25 = 2800.
+  BOOST_TEST((points_with(1, 0.3).count(Point3(1234, 0, 0)) == 1u));
+  // 0.3 m scale: 1234 x 0.3 = 370.2 -> 1480.8 quarter metres -> 1481 = 370.25.
+  BOOST_TEST((points_with(0.3, 0.3).count(Point3(Exact(1481) / 4, 0, 0)) == 1u));
 }
 
 BOOST_AUTO_TEST_CASE(part_names_come_from_nodes_and_colours_from_materials) {

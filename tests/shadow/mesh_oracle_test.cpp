@@ -428,6 +428,21 @@ BOOST_AUTO_TEST_CASE(mesh_fixtures_agree_with_the_exact_oracle) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(a_lamp_inside_a_closed_model_is_shaded_by_every_face) {
+  // The engine leaves out pieces of closed parts turned away from a point light outside
+  // the part (src/shadow/back_pieces.h). Inside the L-shaped building's corner block
+  // (fixtures/meshes/l-courtyard.obj, x, y in [0, 4], z in [0, 6]) every face is turned
+  // away from the lamp, and each is needed: all the ground is in the lamp's shadow. The sun
+  // (outside, its pieces culled) lights the ground around the building.
+  const nlohmann::json house = {{"name", "house"},
+                                {"mesh", fixture("meshes/l-courtyard.obj").string()}};
+  const auto file =
+      real_model_scene("lamp-inside", house, {{"min", {-10, -10, -1}}, {"max", {20, 20, 0}}},
+                       sun_and_lamp({1, 1, -0.5}, {2, 2, 3}));
+  const Tally tally = check_scene(file, Plan{1000, 200, 0}, 3);
+  require_agreement(tally, 200);
+}
+
 BOOST_AUTO_TEST_CASE(ifc_house_agrees_with_the_exact_oracle) {
   // The KIT house (fixtures/meshes/README.md): IFC in metres and z up, which Assimp's IFC
   // reader turns y up, so "up": "y" turns it back. import_model gives 110 parts, 18,643

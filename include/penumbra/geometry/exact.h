@@ -8,6 +8,9 @@
 // cheaper to compute it in rationals directly and wrap the result (same value, so every
 // later decision is the same).
 
+#include <array>
+#include <cmath>
+#include <type_traits>
 #include <utility>
 
 #include "penumbra/geometry/kernel.h"
@@ -31,6 +34,27 @@ Lazy from_exact(Value&& value) {
 // returns the Epeck number whose exact value is value.
 inline Exact exact_number(Rational value) {
   return Exact(std::move(value));
+}
+
+// returns true and sets x when value is exactly a double.
+inline bool exact_double(const Rational& value, double& x) {
+  x = CGAL::to_double(value);
+  return std::isfinite(x) && Rational(x) == value;
+}
+
+// returns the Epeck point whose exact value is value, made from doubles when its coordinates
+// are doubles: its approximation is then exact (a point interval), so filters decide even
+// the equality of two such points without rationals, and no rational is stored.
+template <class Point, class RationalPoint>
+Point point_from(RationalPoint&& value) {
+  constexpr int dimension = std::decay_t<RationalPoint>::Ambient_dimension::value;
+  std::array<double, dimension> x;
+  for (int k = 0; k < dimension; ++k)
+    if (!exact_double(value[k], x[k])) return from_exact<Point>(std::forward<RationalPoint>(value));
+  if constexpr (dimension == 2)
+    return Point(x[0], x[1]);
+  else
+    return Point(x[0], x[1], x[2]);
 }
 
 }  // namespace penumbra

@@ -41,6 +41,12 @@ class FaceFrame {
   RationalPoint2 to_frame(const RationalPoint3& p) const;
   RationalPoint3 to_world(const RationalPoint2& q) const;
 
+  // true when other is a copy of this frame (the same exact objects, not merely equal).
+  bool same_as(const FaceFrame& other) const {
+    return CGAL::identical(origin_, other.origin_) && CGAL::identical(u_, other.u_) &&
+           CGAL::identical(v_, other.v_);
+  }
+
   // the unit axes, rounded to doubles, for output.
   Vec3d unit_u() const;
   Vec3d unit_v() const;
