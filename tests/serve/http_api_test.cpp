@@ -226,4 +226,40 @@ BOOST_AUTO_TEST_CASE(only_loopback_counts_as_local) {
 
 BOOST_AUTO_TEST_SUITE_END()
 
+// A scene with a real model (issue #14): the L-shaped courtyard building, closed and not
+// convex, enters as convex pieces whose inner sides receive nothing. The server serves its
+// patches (only the receiving sides: those of the basis) and relights them.
+BOOST_AUTO_TEST_CASE(a_scene_with_a_real_model_is_served_and_relit) {
+  const Scene scene = load_scene(test::fixture("scenes/mesh-courtyard.json"));
+  basis::BasisOptions options;
+  options.degree = 2;
+  options.patch_size = 1;
+  const basis::BasisLuminances basis = basis::compute_basis(scene, options);
+  LightingSession session(basis, scene);
+  LightingServer server(session, ServerOptions{"127.0.0.1", 0, 1 << 16});
+  const int port = server.bind();
+  std::thread thread([&] { server.run(); });
+  httplib::Client client("127.0.0.1", port);
+  const auto described = client.Get("/api/scene");
+  const auto mesh = client.Get("/api/mesh");
+  const auto relit = client.Get("/api/relight");
+  server.stop();
+  thread.join();
+  BOOST_TEST_REQUIRE((described && mesh && relit));
+  BOOST_TEST(described->status == 200);
+  const auto json = nlohmann::json::parse(described->body);
+  BOOST_TEST(json["patches"].get<std::size_t>() == basis.mesh.size());
+  BOOST_TEST(json["scene_file"] == "mesh-courtyard.json");
+  const std::size_t v = basis.mesh.vertices().size();
+  BOOST_TEST(relit->body.size() == 4 * (4 * v));
+  // The sun lights the ground beside the house: some vertex has tens of thousands of lux.
+  float brightest = 0;
+  for (std::size_t k = 0; k < v; ++k) {
+    float lux = 0;
+    std::memcpy(&lux, relit->body.data() + 12 * v + 4 * k, 4);
+    brightest = std::max(brightest, lux);
+  }
+  BOOST_TEST(brightest > 10000.0f);
+}
+
 }  // namespace penumbra::serve
