@@ -445,8 +445,8 @@ BOOST_AUTO_TEST_CASE(a_lamp_inside_a_closed_model_is_shaded_by_every_face) {
 
 BOOST_AUTO_TEST_CASE(ifc_house_agrees_with_the_exact_oracle) {
   // The KIT house (fixtures/meshes/README.md): IFC in metres and z up, which Assimp's IFC
-  // reader turns y up, so "up": "y" turns it back. import_model gives 110 parts, 18,643
-  // faces (9,702 of closed solids, the rest of open surfaces, so about 27,600 entries) in
+  // reader turns y up, so "up": "y" turns it back. import_model gives 110 parts, about
+  // 18,700 faces (some 9,700 of closed solids, the rest of open surfaces: 27,325 entries) in
   // x in [-3, 15], y in [-3, 13], z in [-1, 6.32]: the ground's top is put at z = -1. The
   // lamp stands east of the house at mid-height, so light also falls through its windows.
   const auto path = gunzip_fixture("meshes/AC14-FZK-Haus.ifc");
