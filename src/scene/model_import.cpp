@@ -7,11 +7,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <exception>
 #include <fstream>
 #include <map>
+#include <set>
+#include <sstream>
 #include <unordered_map>
 #include <utility>
 
@@ -227,6 +228,28 @@ void collect_parts(const aiScene& scene, const aiNode& node, const Affine& paren
     collect_parts(scene, *node.mChildren[k], world, name.empty() ? parent_name : name, file, parts);
 }
 
+// gives an OBJ file's parts their whole names: Assimp's OBJ reader ends an object's name at
+// its first space ("o Left Wing" becomes "Left"), and merges objects whose names share that
+// first word into one part. The file's `o` lines are read here: a part named by the first
+// word of exactly one whole name takes it; a part several whole names begin with keeps the
+// word (its objects were merged).
+void whole_obj_names(const std::filesystem::path& path, std::vector<PartSource>& parts) {
+  std::map<std::string, std::set<std::string>> whole_names;  // first word -> whole names
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    std::string keyword, first, name;
+    if (!(fields >> keyword) || keyword != "o" || !(fields >> first)) continue;
+    std::getline(fields, name);
+    while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back()))) name.pop_back();
+    whole_names[first].insert(first + name);
+  }
+  for (auto& part : parts) {
+    const auto found = whole_names.find(part.name);
+    if (found != whole_names.end() && found->second.size() == 1) part.name = *found->second.begin();
+  }
+}
+
 // makes the part names unique: parts sharing a name whose parents have distinct names
 // are qualified by them ("IfcWindow-1/IfcMappedItem"); others sharing a name are numbered
 // #0, #1, ... in file order.
@@ -380,6 +403,7 @@ ImportedModel import_model(const std::filesystem::path& path, const Placement& p
 
   std::vector<PartSource> sources;
   collect_parts(scene, *scene.mRootNode, identity_map(), "", file, sources);
+  if (lower(path.extension().string()) == ".obj") whole_obj_names(path, sources);
   unique_names(sources);
 
   ImportedModel model;

@@ -502,6 +502,21 @@ BOOST_AUTO_TEST_CASE(the_grid_step_is_the_largest_power_of_two_not_above_snap) {
   BOOST_TEST((points_with(0.3, 0.3).count(Point3(Exact(1481) / 4, 0, 0)) == 1u));
 }
 
+BOOST_AUTO_TEST_CASE(obj_object_names_keep_their_spaces) {
+  // Assimp's OBJ reader ends names at the first space and merges "Wall 1" and "Wall 2" into
+  // one object "Wall"; the importer restores whole names where one name begins with the word.
+  const auto path = write_file("named.obj",
+                               "o Left Wing\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+                               "o  Right Wing \r\nv 0 0 1\nv 1 0 1\nv 0 1 1\nf 4 5 6\n"
+                               "o Wall 1\nv 0 0 2\nv 1 0 2\nv 0 1 2\nf 7 8 9\n"
+                               "o Wall 2\nv 0 0 3\nv 1 0 3\nv 0 1 3\nf 10 11 12\n");
+  const ImportedModel model = import_model(path);
+  std::set<std::string> names;
+  for (const auto& part : model.parts) names.insert(part.name);
+  BOOST_TEST((names == std::set<std::string>{"Left Wing", "Right Wing", "Wall"}));
+  BOOST_TEST(find_part(model, "Wall")->faces.size() == 2u);  // both walls' triangles
+}
+
 BOOST_AUTO_TEST_CASE(part_names_come_from_nodes_and_colours_from_materials) {
   const ImportedModel spider = import_model(test::fixture("meshes/spider.obj"));
   check_faces(spider);
