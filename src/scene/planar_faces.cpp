@@ -346,13 +346,14 @@ class PlaneUnion {
   }
 
  private:
-  // returns faces ordered by their outer rings' lexicographically smallest points (the
-  // rings are disjoint, so these differ), whichever way they were found.
+  // returns faces ordered by their outer rings' lexicographically smallest points,
+  // whichever way they were found (pieces of a union that touch at their smallest point
+  // keep the union's order).
   static std::vector<PlanarFace> in_order(std::vector<PlanarFace> faces) {
     const auto smallest = [](const PlanarFace& face) {
       return *std::min_element(face.outer.begin(), face.outer.end(), point_less);
     };
-    std::sort(faces.begin(), faces.end(), [&](const PlanarFace& a, const PlanarFace& b) {
+    std::stable_sort(faces.begin(), faces.end(), [&](const PlanarFace& a, const PlanarFace& b) {
       return point_less(smallest(a), smallest(b));
     });
     return faces;
