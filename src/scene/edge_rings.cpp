@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <numeric>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace penumbra::detail {
 namespace {
@@ -136,14 +137,14 @@ std::optional<std::vector<EdgeRingFace>> edge_ring_faces(
   std::vector<int> starts;
   for (const auto& entry : next) starts.push_back(entry.first);
   std::sort(starts.begin(), starts.end());
-  std::unordered_map<int, char> used;
+  std::unordered_set<int> used;
   std::vector<std::vector<int>> rings;
   std::vector<int> ring_component;
   for (int start : starts) {
     if (used.count(start)) continue;
     std::vector<int> ring;
     for (int v = start; !used.count(v);) {
-      used[v] = 1;
+      used.insert(v);
       ring.push_back(v);
       const auto step = next.find(v);
       if (step == next.end()) return std::nullopt;
@@ -179,10 +180,10 @@ std::optional<std::vector<EdgeRingFace>> edge_ring_faces(
   // inside the most outer rings; both must be one component of triangles.
   std::vector<EdgeRingFace> faces;
   std::vector<int> face_of(rings.size(), -1);
-  std::unordered_map<int, char> component_used;
+  std::unordered_set<int> components_with_a_face;
   for (std::size_t r = 0; r < rings.size(); ++r) {
     if (orientation[r] < 0) continue;
-    if (!component_used.emplace(ring_component[r], 1).second) return std::nullopt;
+    if (!components_with_a_face.insert(ring_component[r]).second) return std::nullopt;
     face_of[r] = static_cast<int>(faces.size());
     faces.push_back({rings[r], {}, 0});
   }

@@ -237,6 +237,8 @@ void whole_obj_names(const std::filesystem::path& path, std::vector<PartSource>&
   std::map<std::string, std::set<std::string>> whole_names;  // first word -> whole names
   std::ifstream in(path);
   for (std::string line; std::getline(in, line);) {
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line[start] != 'o') continue;  // most lines: v, f
     std::istringstream fields(line);
     std::string keyword, first, name;
     if (!(fields >> keyword) || keyword != "o" || !(fields >> first)) continue;

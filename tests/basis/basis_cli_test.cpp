@@ -9,32 +9,11 @@
 
 #include "support/fixtures.h"
 
+using penumbra::test::csv_columns;
 using penumbra::test::fixture;
 using penumbra::test::read_text;
 using penumbra::test::run_penumbra;
 using penumbra::test::scratch_dir;
-
-namespace {
-
-// reads a CSV into columns by name.
-std::map<std::string, std::vector<std::string>> columns(const std::string& text) {
-  std::istringstream in(text);
-  std::string line, field;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  for (std::istringstream header(line); std::getline(header, field, ',');) names.push_back(field);
-  std::map<std::string, std::vector<std::string>> out;
-  while (std::getline(in, line)) {
-    std::istringstream row(line);
-    for (const std::string& name : names) {
-      std::getline(row, field, ',');
-      out[name].push_back(field);
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 BOOST_AUTO_TEST_SUITE(basis_cli)
 
@@ -56,8 +35,8 @@ BOOST_AUTO_TEST_CASE(basis_relight_and_radiosity_agree) {
   result = run_penumbra("radiosity " + scene + " --patch-size 0.5 --rays 64 -o " +
                         (dir / "solved.csv").string());
   BOOST_TEST_REQUIRE(result.status == 0, result.err);
-  const auto relit = columns(read_text(dir / "relit.csv"));
-  const auto solved = columns(read_text(dir / "solved.csv"));
+  const auto relit = csv_columns(read_text(dir / "relit.csv"));
+  const auto solved = csv_columns(read_text(dir / "solved.csv"));
   for (const char* name :
        {"object", "face", "x", "y", "z", "nx", "ny", "nz", "area", "E_direct", "E"}) {
     BOOST_TEST_REQUIRE(relit.count(name) == 1u, name);
@@ -104,7 +83,7 @@ BOOST_AUTO_TEST_CASE(fit_prints_a_distribution_that_meets_its_targets) {
   BOOST_TEST_REQUIRE(
       run_penumbra("relight " + pbl + " --lid 'centre=" + curve + "' --patches " + relit_csv)
           .status == 0);
-  const auto wanted = columns(read_text(relit_csv));
+  const auto wanted = csv_columns(read_text(relit_csv));
   std::ofstream targets(dir / "targets.csv");
   targets << "x,y,z,E\n";
   double largest = 0;

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -37,26 +36,6 @@ std::filesystem::path mesh_scene() {
       {"camera", {{"eye", {-8, -8, 10}}, {"target", {5, 5, 0}}, {"width", 80}, {"height", 60}}}};
   std::ofstream(dir / "scene.json") << scene.dump();
   return dir / "scene.json";
-}
-
-// returns the rows of a CSV file with a header line, each as column -> text (no quoting:
-// the patch files' names have no commas).
-std::vector<std::map<std::string, std::string>> csv_rows(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string line, field;
-  std::getline(in, line);
-  std::vector<std::string> names;
-  for (std::istringstream header(line); std::getline(header, field, ',');) names.push_back(field);
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    std::istringstream cells(line);
-    auto& row = rows.emplace_back();
-    for (const std::string& name : names) {
-      std::getline(cells, field, ',');
-      row[name] = field;
-    }
-  }
-  return rows;
 }
 
 }  // namespace
@@ -116,17 +95,16 @@ BOOST_AUTO_TEST_CASE(every_verb_runs_on_real_models) {
   const auto relight =
       run_penumbra("relight " + out("scene.pbl") + " --patches " + out("relit.csv"));
   BOOST_TEST_REQUIRE(relight.status == 0, relight.err);
-  const auto relit = csv_rows(dir / "relit.csv");
-  const auto solved = csv_rows(dir / "patches.csv");
-  BOOST_TEST_REQUIRE(relit.size() == solved.size());
-  BOOST_TEST(relit.size() > 100u);
-  for (std::size_t i = 0; i < relit.size(); ++i) {
-    BOOST_TEST(relit[i].at("object") == solved[i].at("object"));
-    for (const char* column : {"E_direct", "E"}) {
-      const double a = std::stod(relit[i].at(column)), b = std::stod(solved[i].at(column));
+  const auto relit = penumbra::test::csv_columns(penumbra::test::read_text(dir / "relit.csv"));
+  const auto solved = penumbra::test::csv_columns(penumbra::test::read_text(dir / "patches.csv"));
+  BOOST_TEST_REQUIRE(relit.at("E").size() == solved.at("E").size());
+  BOOST_TEST(relit.at("E").size() > 100u);
+  BOOST_TEST(relit.at("object") == solved.at("object"), boost::test_tools::per_element());
+  for (const char* column : {"E_direct", "E"})
+    for (std::size_t i = 0; i < relit.at(column).size(); ++i) {
+      const double a = std::stod(relit.at(column)[i]), b = std::stod(solved.at(column)[i]);
       BOOST_TEST(std::abs(a - b) <= 1e-6 * std::max(1.0, std::abs(b)), column << " row " << i);
     }
-  }
 }
 
 BOOST_AUTO_TEST_CASE(a_bad_model_writes_nothing_and_exits_2) {

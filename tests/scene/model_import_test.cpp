@@ -504,16 +504,19 @@ BOOST_AUTO_TEST_CASE(the_grid_step_is_the_largest_power_of_two_not_above_snap) {
 
 BOOST_AUTO_TEST_CASE(obj_object_names_keep_their_spaces) {
   // Assimp's OBJ reader ends names at the first space and merges "Wall 1" and "Wall 2" into
-  // one object "Wall"; the importer restores whole names where one name begins with the word.
+  // one object "Wall"; the importer restores whole names where one name begins with the word,
+  // non-ASCII letters, commas and quotes included.
   const auto path = write_file("named.obj",
                                "o Left Wing\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
                                "o  Right Wing \r\nv 0 0 1\nv 1 0 1\nv 0 1 1\nf 4 5 6\n"
                                "o Wall 1\nv 0 0 2\nv 1 0 2\nv 0 1 2\nf 7 8 9\n"
-                               "o Wall 2\nv 0 0 3\nv 1 0 3\nv 0 1 3\nf 10 11 12\n");
+                               "o Wall 2\nv 0 0 3\nv 1 0 3\nv 0 1 3\nf 10 11 12\n"
+                               "o K\u00fcche, \"Nord\"\nv 0 0 4\nv 1 0 4\nv 0 1 4\nf 13 14 15\n");
   const ImportedModel model = import_model(path);
   std::set<std::string> names;
   for (const auto& part : model.parts) names.insert(part.name);
-  BOOST_TEST((names == std::set<std::string>{"Left Wing", "Right Wing", "Wall"}));
+  BOOST_TEST(
+      (names == std::set<std::string>{"Left Wing", "Right Wing", "Wall", "K\u00fcche, \"Nord\""}));
   BOOST_TEST(find_part(model, "Wall")->faces.size() == 2u);  // both walls' triangles
 }
 

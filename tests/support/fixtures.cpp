@@ -96,4 +96,21 @@ CommandResult run_penumbra(const std::string& arguments) {
   return {status, read_text(dir / "out"), read_text(dir / "err")};
 }
 
+std::map<std::string, std::vector<std::string>> csv_columns(const std::string& text) {
+  std::istringstream in(text);
+  std::string line, field;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  for (std::istringstream header(line); std::getline(header, field, ',');) names.push_back(field);
+  std::map<std::string, std::vector<std::string>> out;
+  while (std::getline(in, line)) {
+    std::istringstream row(line);
+    for (const std::string& name : names) {
+      std::getline(row, field, ',');
+      out[name].push_back(field);
+    }
+  }
+  return out;
+}
+
 }  // namespace penumbra::test

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -55,5 +56,7 @@ PngImage read_png(const std::filesystem::path& path);
 
 // reads a whole file.
 std::string read_text(const std::filesystem::path& path);
+// returns the columns of a CSV text with a header line, by name (plain fields: no quoting).
+std::map<std::string, std::vector<std::string>> csv_columns(const std::string& text);
 
 }  // namespace penumbra::test
