@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include "convex_hull_2.h"
 #include "dyadic_vector.h"
 #include "penumbra/geometry/dyadic_plane.h"
@@ -17,24 +19,25 @@
 namespace penumbra {
 namespace {
 
-// returns the cycle without its collinear points when it is certainly a convex polygon turning
-// counter-clockwise about normal (the points distinct and coplanar): every turn left or straight
-// and every fan triangle from the first point non-negative (so the cycle winds once), seen
-// along the largest component of normal, where projecting keeps or reverses every orientation
-// alike. Nothing when a test fails: the caller's full check then decides (and names the point).
-std::optional<std::vector<Point3>> convex_cycle(const std::vector<Point3>& points,
-                                                const Vector3& normal) {
-  int axis = -1;
-  double largest = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double size = std::abs(CGAL::to_double(normal[k]));
-    if (size > largest && !CGAL::is_zero(normal[k])) largest = size, axis = k;
+// returns the coordinates of the points when all are doubles (their intervals single
+// values), or nothing.
+std::optional<std::vector<Double3>> doubles_of(const std::vector<Point3>& points) {
+  std::vector<Double3> coordinates;
+  for (const Point3& p : points) {
+    const auto x = double_coordinates(p);
+    if (!x) return std::nullopt;
+    coordinates.push_back(*x);
   }
-  if (axis < 0) return std::nullopt;
-  const CGAL::Orientation turn =
-      CGAL::is_positive(normal[axis]) ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
-  std::vector<Point2> flat;
-  for (const Point3& p : points) flat.emplace_back(p[(axis + 1) % 3], p[(axis + 2) % 3]);
+  return coordinates;
+}
+
+// returns the points without their collinear ones when flat, their projection, is certainly a
+// convex polygon turning `turn`: every turn that way or straight and every fan triangle from
+// the first point too (so the cycle winds once). Nothing when a test fails.
+template <typename FlatPoint>
+std::optional<std::vector<Point3>> convex_cycle(const std::vector<Point3>& points,
+                                                const std::vector<FlatPoint>& flat,
+                                                CGAL::Orientation turn) {
   const std::size_t n = flat.size();
   std::vector<Point3> kept;
   for (std::size_t k = 0; k < n; ++k) {
@@ -58,16 +61,32 @@ std::optional<std::vector<Point3>> convex_cycle(const std::vector<Point3>& point
   return kept;
 }
 
-// returns the coordinates of the points when all are doubles (their intervals single
-// values), or nothing.
-std::optional<std::vector<Double3>> doubles_of(const std::vector<Point3>& points) {
-  std::vector<Double3> coordinates;
-  for (const Point3& p : points) {
-    const auto x = double_coordinates(p);
-    if (!x) return std::nullopt;
-    coordinates.push_back(*x);
+// returns the cycle without its collinear points when it is certainly a convex polygon turning
+// counter-clockwise about normal (the points distinct and coplanar), tested seen along the
+// largest component of normal, where projecting keeps or reverses every orientation alike.
+// Nothing when a test fails: the caller's full check then decides (and names the point).
+std::optional<std::vector<Point3>> convex_cycle(const std::vector<Point3>& points,
+                                                const Vector3& normal) {
+  int axis = -1;
+  double largest = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double size = std::abs(CGAL::to_double(normal[k]));
+    if (size > largest && !CGAL::is_zero(normal[k])) largest = size, axis = k;
   }
-  return coordinates;
+  if (axis < 0) return std::nullopt;
+  const CGAL::Orientation turn =
+      CGAL::is_positive(normal[axis]) ? CGAL::LEFT_TURN : CGAL::RIGHT_TURN;
+  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+  // Points with double coordinates (a model's, snapped) are tested as doubles: Epick's
+  // predicates are exact on them, and no lazy number is made.
+  if (const auto coordinates = doubles_of(points)) {
+    std::vector<CGAL::Epick::Point_2> flat;
+    for (const Double3& x : *coordinates) flat.emplace_back(x[i], x[j]);
+    return convex_cycle(points, flat, turn);
+  }
+  std::vector<Point2> flat;
+  for (const Point3& p : points) flat.emplace_back(p[i], p[j]);
+  return convex_cycle(points, flat, turn);
 }
 
 // fills face's plane, frame and ring from its cycle of points given as doubles, in dyadic

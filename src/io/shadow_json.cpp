@@ -62,7 +62,7 @@ void emit_unit(JsonEmitter& out, const Vector3& v) {
 // to its slot.
 struct FaceOutput {
   const ReceivingFace& face;
-  Ring2 ring;  // the outer ring's points in the frame
+  const Ring2& ring;  // the outer ring's points in the frame
   std::unordered_map<std::size_t, std::size_t> world;
   std::vector<std::array<double, 3>> rounded;
   std::unordered_map<const OccluderShadow*, double> occluder_area;  // m^2, computed alike
@@ -382,14 +382,8 @@ void emit_boundary(JsonEmitter& out, const ReceivingFace& face, bool exact) {
 constexpr std::size_t kCachedOccluders = 32;
 
 // returns the face ready to be written: the world doubles of every point of its shadows.
-FaceOutput prepare_output(const ReceivingFace& face, const Ring2* ring, const ShadowResult& result,
-                          std::size_t r) {
-  FaceOutput output{face, {}, {}, {}, {}};
-  if (ring) {
-    output.ring = *ring;
-  } else {
-    for (const Point3& p : face.outer) output.ring.push_back(face.frame.to_frame(p));
-  }
+FaceOutput prepare_output(const ReceivingFace& face, const ShadowResult& result, std::size_t r) {
+  FaceOutput output{face, face.ring, {}, {}, {}};
   // Worth it only for a face under many shadows; a small face writes its points directly.
   std::size_t occluder_count = 0;
   for (const LightShadows& light : result.lights) occluder_count += light.faces[r].occluders.size();
@@ -438,10 +432,7 @@ FaceOutput prepare_output(const ReceivingFace& face, const Ring2* ring, const Sh
 void emit_face(JsonEmitter& out, const Scene& scene, const ShadowResult& result, std::size_t r,
                const ShadowJsonOptions& options) {
   const ReceivingFace face = receiving_face(scene, result, r);
-  const Receiver& receiver = result.receivers[r];
-  const Ring2* ring =
-      face.holes ? nullptr : &scene.objects[receiver.object].solid.faces()[receiver.face].ring;
-  const FaceOutput output = prepare_output(face, ring, result, r);
+  const FaceOutput output = prepare_output(face, result, r);
   out.begin_object();
   out.key("area");
   out.number(world_area(face.area, face.frame));

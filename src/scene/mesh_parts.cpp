@@ -45,21 +45,20 @@ std::optional<ConvexPolyhedron> convex_solid(const ModelPart& part) {
 }
 
 // The MeshFace on plane's positive side with the given rings (counter-clockwise outer,
-// clockwise holes, seen from that side) made of pieces (object, face).
-MeshFace mesh_face(const Scene& scene, const std::string& part, std::size_t index,
-                   const Plane3& plane, const std::vector<Point3>& outer,
-                   const std::vector<std::vector<Point3>>& holes,
-                   std::vector<std::pair<std::size_t, std::size_t>> pieces) {
+// clockwise holes, seen from that side) made of pieces, each lying on it with its face
+// number side (part, index and the pieces' object numbers are filled in later).
+MeshFace mesh_face(const std::vector<ConvexPolyhedron>& pieces,
+                   const std::vector<std::size_t>& side, const Plane3& plane,
+                   const std::vector<Point3>& outer,
+                   const std::vector<std::vector<Point3>>& holes) {
   MeshFace face;
-  face.part = part;
-  face.index = index;
-  face.pieces = std::move(pieces);
-  if (face.pieces.size() == 1) {
+  if (pieces.size() == 1) {
     // One convex piece: the face is the piece's, frame and all.
-    const Face& piece = scene.objects[face.pieces[0].first].solid.faces()[face.pieces[0].second];
+    const Face& piece = pieces[0].faces()[side[0]];
     face.plane = piece.plane;
     face.frame = piece.frame;
     face.outer = piece.vertices;
+    face.ring = piece.ring;
     face.area = piece.area;
     return face;
   }
@@ -76,6 +75,7 @@ MeshFace mesh_face(const Scene& scene, const std::string& part, std::size_t inde
   const auto add_ring = [&](const std::vector<Point3>& ring) {
     std::vector<Point2> q;
     for (const Point3& p : ring) q.push_back(face.frame.to_frame(p));
+    if (face.ring.empty()) face.ring = q;  // the outer ring comes first
     for (std::size_t k = 0; k < q.size(); ++k) {
       const Point2& a = q[k];
       const Point2& b = q[(k + 1) % q.size()];
@@ -108,6 +108,20 @@ MeshPartObjects mesh_part_objects(const ModelPart& part, const std::string& file
       throw InputError(file, "part " + part.name + ", face " + std::to_string(f),
                        std::string("the face cannot be cut into convex pieces: ") + e.what());
     }
+    // Each piece's faces: the one on the face's own side, and the other.
+    std::vector<std::size_t> front, back;
+    for (const ConvexPolyhedron& piece : pieces) {
+      front.push_back(piece.faces()[0].plane == face.plane ? 0 : 1);
+      back.push_back(1 - front.back());
+    }
+    objects.mesh_faces.push_back(mesh_face(pieces, front, face.plane, face.outer, face.holes));
+    // An open surface receives on both sides: the back is the next face.
+    if (!face.solid) {
+      std::vector<std::vector<Point3>> holes;
+      for (const auto& hole : face.holes) holes.push_back(reversed(hole));
+      objects.mesh_faces.push_back(
+          mesh_face(pieces, back, face.plane.opposite(), reversed(face.outer), holes));
+    }
     objects.faces.push_back(std::move(pieces));
   }
   return objects;
@@ -122,9 +136,17 @@ void add_mesh_part(Scene& scene, const Object& base, const ModelPart& part,
     return;
   }
   std::size_t piece_number = 0, face_number = 0;
+  const auto add = [&](std::vector<std::pair<std::size_t, std::size_t>> pieces) {
+    for (const auto& [object, face] : pieces)
+      scene.objects[object].mesh_faces[face] = scene.mesh_faces.size();
+    MeshFace& face = objects.mesh_faces[face_number];
+    face.part = base.name;
+    face.index = face_number++;
+    face.pieces = std::move(pieces);
+    scene.mesh_faces.push_back(std::move(face));
+  };
   for (std::size_t f = 0; f < part.faces.size(); ++f) {
     const PlanarFace& planar = part.faces[f];
-    // Each piece's faces: the one on the face's own side, and the other.
     std::vector<std::pair<std::size_t, std::size_t>> front, back;
     for (ConvexPolyhedron& solid : objects.faces[f]) {
       const std::size_t own = solid.faces()[0].plane == planar.plane ? 0 : 1;
@@ -137,21 +159,8 @@ void add_mesh_part(Scene& scene, const Object& base, const ModelPart& part,
       back.push_back({scene.objects.size(), 1 - own});
       scene.objects.push_back(std::move(piece));
     }
-    const auto add = [&](std::vector<std::pair<std::size_t, std::size_t>> pieces,
-                         const Plane3& plane, const std::vector<Point3>& outer,
-                         const std::vector<std::vector<Point3>>& holes) {
-      for (const auto& [object, face] : pieces)
-        scene.objects[object].mesh_faces[face] = scene.mesh_faces.size();
-      scene.mesh_faces.push_back(
-          mesh_face(scene, base.name, face_number++, plane, outer, holes, std::move(pieces)));
-    };
-    add(std::move(front), planar.plane, planar.outer, planar.holes);
-    // An open surface receives on both sides: the back is the next face.
-    if (!planar.solid) {
-      std::vector<std::vector<Point3>> holes;
-      for (const auto& hole : planar.holes) holes.push_back(reversed(hole));
-      add(std::move(back), planar.plane.opposite(), reversed(planar.outer), holes);
-    }
+    add(std::move(front));
+    if (!planar.solid) add(std::move(back));
   }
 }
 

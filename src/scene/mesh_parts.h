@@ -16,6 +16,9 @@ namespace penumbra::detail {
 struct MeshPartObjects {
   std::optional<ConvexPolyhedron> convex;            // a closed convex part
   std::vector<std::vector<ConvexPolyhedron>> faces;  // otherwise, each face's convex pieces
+  // and the MeshFaces they make up, in order (a face, then its back for an open one),
+  // without part, index and pieces.
+  std::vector<MeshFace> mesh_faces;
 };
 
 // returns the part's solid when it is a closed convex one, or its faces' convex pieces. Throws

@@ -281,9 +281,7 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
 // unite_pieces need not compute it); nothing otherwise.
 std::optional<Region2> whole_face(const MeshFace& face, std::size_t present) {
   if (!face.holes.empty() || present != face.pieces.size()) return std::nullopt;
-  Ring2 ring;
-  for (const Point3& p : face.outer) ring.push_back(face.frame.to_frame(p));
-  return canonical_region({Polygon2{canonical_ring(ring), {}}}, face.area);
+  return canonical_region({Polygon2{canonical_ring(face.ring), {}}}, face.area);
 }
 
 // Documents report a mesh face once (docs/shadows.md, "Faces of real models"): the receivers
@@ -433,12 +431,15 @@ ReceivingFace receiving_face(const Scene& scene, const ShadowResult& result, std
   const std::size_t m = result.mesh_faces.empty() ? kNoMeshFace : result.mesh_faces[r];
   if (m != kNoMeshFace) {
     const MeshFace& face = scene.mesh_faces[m];
-    return {face.part, face.index, face.plane, face.frame, face.outer, &face.holes, face.area};
+    return {face.part,  face.index, face.plane,  face.frame,
+            face.outer, face.ring,  &face.holes, face.area};
   }
   const Object& object = scene.objects[result.receivers[r].object];
   const Face& face = object.solid.faces()[result.receivers[r].face];
-  return {object.name, result.receivers[r].face, face.plane, face.frame, face.vertices, nullptr,
-          face.area};
+  return {object.name,   result.receivers[r].face,
+          face.plane,    face.frame,
+          face.vertices, face.ring,
+          nullptr,       face.area};
 }
 
 }  // namespace penumbra

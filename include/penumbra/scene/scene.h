@@ -73,6 +73,7 @@ struct MeshFace {
   Plane3 plane;       // positive side = the side that receives
   FaceFrame frame;    // the face's own frame: the single piece's, or at outer[0] along outer
   std::vector<Point3> outer;  // counter-clockwise seen from the positive side, from its smallest
+  std::vector<Point2> ring;   // outer in the frame (to_frame), exact
   std::vector<std::vector<Point3>> holes;  // clockwise, each from its smallest point, sorted
   Exact area;                              // in frame units
   // the pieces: (object, face of the object lying on this side), in the object order.

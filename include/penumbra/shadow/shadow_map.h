@@ -75,6 +75,7 @@ struct ReceivingFace {
   const Plane3& plane;
   const FaceFrame& frame;
   const std::vector<Point3>& outer;               // counter-clockwise seen from outside
+  const std::vector<Point2>& ring;                // outer in the frame, exact
   const std::vector<std::vector<Point3>>* holes;  // clockwise; nullptr for an object's face
   const Exact& area;                              // in frame units
 };
