@@ -268,10 +268,9 @@ CGAL::Bounded_side ConvexPolyhedron::bounded_side(const Point3& p) const {
     const Face& face = faces_.front();
     if (face.plane.oriented_side(p) != CGAL::ON_ORIENTED_BOUNDARY) return CGAL::ON_UNBOUNDED_SIDE;
     const Point2 q = face.frame.to_frame(p);
-    const std::size_t n = face.vertices.size();
+    const std::size_t n = face.ring.size();
     for (std::size_t k = 0; k < n; ++k)
-      if (CGAL::orientation(face.frame.to_frame(face.vertices[k]),
-                            face.frame.to_frame(face.vertices[(k + 1) % n]), q) == CGAL::RIGHT_TURN)
+      if (CGAL::orientation(face.ring[k], face.ring[(k + 1) % n], q) == CGAL::RIGHT_TURN)
         return CGAL::ON_UNBOUNDED_SIDE;
     return CGAL::ON_BOUNDARY;
   }

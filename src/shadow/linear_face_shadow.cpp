@@ -10,6 +10,7 @@
 #include "penumbra/shadow/face_shadow.h"
 #include "penumbra/shadow/linear_shadow.h"
 #include "penumbra/shadow/shadow_loops.h"
+#include "receiver_clip.h"
 #include "region_set.h"
 
 namespace penumbra {
@@ -17,6 +18,12 @@ namespace {
 
 // returns true when the closed segment ab meets the closed solid.
 bool segment_meets(const ConvexPolyhedron& solid, const Point3& a, const Point3& b) {
+  // Both ends strictly outside one face's plane: the segment misses (the usual case, decided
+  // without constructing the line's crossings).
+  for (const Face& face : solid.faces())
+    if (face.plane.oriented_side(a) == CGAL::ON_POSITIVE_SIDE &&
+        face.plane.oriented_side(b) == CGAL::ON_POSITIVE_SIDE)
+      return false;
   const auto inside = line_in_solid(solid, a, b);
   return inside && inside->first <= 1 && inside->second >= 0;
 }
@@ -41,7 +48,6 @@ FaceShadow linear_face_shadow(const Face& face, const Point3& q1, const Point3& 
                               std::vector<Occluder> occluders) {
   FaceShadow result;
   result.linear = true;
-  const Ring2 ring = face_ring(face);
   const auto source = visible_source(face, q1, q2);
   if (!source) {
     // Section 4.1.2 / Fig. 7, S2: invisible from both end points; wholly unlit.
@@ -52,6 +58,7 @@ FaceShadow linear_face_shadow(const Face& face, const Point3& q1, const Point3& 
   }
   result.source_clipped = source->clipped;
 
+  const detail::ReceiverClip receiver(face);
   std::vector<Ring2> shadows, umbrae;
   for (const Occluder& occluder : occluders) {
     const ConvexPolyhedron& solid = *occluder.solid;
@@ -66,7 +73,7 @@ FaceShadow linear_face_shadow(const Face& face, const Point3& q1, const Point3& 
     if (segment_meets(solid, source->q1, source->q2))
       throw std::domain_error("the linear source touches or passes through an occluder");
     const auto volumes = linear_volumes(solid, source->q1, source->q2);
-    const LinearShadowRings rings = clip_by_volumes(face, *volumes);
+    const LinearShadowRings rings = detail::clip_by_volumes(*volumes, receiver);
     if (!rings.penumbra) continue;
     OccluderShadow shadow{occluder.id, *rings.penumbra, rings.umbra, volumes->kind};
     shadow.object_space = !projects_onto(solid, face, source->q1, source->q2);
@@ -80,13 +87,11 @@ FaceShadow linear_face_shadow(const Face& face, const Point3& q1, const Point3& 
     result.occluders.push_back(std::move(shadow));
   }
 
-  for (std::size_t i = 0; i < shadows.size() && !result.joint_occlusion; ++i)
-    for (std::size_t j = i + 1; j < shadows.size() && !result.joint_occlusion; ++j)
-      result.joint_occlusion = detail::interiors_overlap(shadows[i], shadows[j]);
+  result.joint_occlusion = detail::any_interiors_overlap(shadows);
   result.shadow = detail::unite_minus(shadows);
   result.umbra = detail::unite_minus(umbrae);
   result.penumbra = detail::unite_minus(shadows, umbrae);
-  result.lit = detail::unite_minus({ring}, shadows);
+  result.lit = detail::unite_minus({face.ring}, shadows);
   return result;
 }
 

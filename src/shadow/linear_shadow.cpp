@@ -7,19 +7,10 @@
 #include "../geometry/convex_hull_2.h"
 #include "half_plane.h"
 #include "penumbra/shadow/face_shadow.h"
+#include "receiver_clip.h"
 
 namespace penumbra {
 namespace {
-
-std::optional<Ring2> clip_face(const Face& face, const OpenVolume& volume) {
-  if (volume.planes.empty()) return std::nullopt;
-  Ring2 ring = face_ring(face);
-  for (const Plane3& plane : volume.planes) {
-    ring = detail::clip(ring, detail::restrict_to(plane, face.frame));
-    if (ring.size() < 3) return std::nullopt;
-  }
-  return detail::ring_with_area(ring);
-}
 
 Ring2 counter_clockwise(Ring2 ring) {
   std::reverse(ring.begin(), ring.end());
@@ -37,19 +28,34 @@ bool projects_onto(const ConvexPolyhedron& solid, const Face& face, const Point3
   });
 }
 
+namespace detail {
+
+LinearShadowRings clip_by_volumes(const LinearVolumes& volumes, const ReceiverClip& receiver) {
+  const auto clip = [&](const OpenVolume& volume) -> std::optional<Ring2> {
+    if (volume.planes.empty()) return std::nullopt;
+    return receiver.clip(volume.planes);
+  };
+  return {clip(volumes.penumbra), clip(volumes.umbra)};
+}
+
+}  // namespace detail
+
 LinearShadowRings clip_by_volumes(const Face& face, const LinearVolumes& volumes) {
-  return {clip_face(face, volumes.penumbra), clip_face(face, volumes.umbra)};
+  return detail::clip_by_volumes(volumes, detail::ReceiverClip(face));
 }
 
 Ring2 projected_contour(const ConvexPolyhedron& solid, const std::vector<int>& contour,
                         const Face& face, const Point3& q) {
+  // In rationals: the points are made exact, with no lazy construction behind them.
   Ring2 ring;
-  const Exact fq = plane_value(face.plane, q);
+  const RationalPlane3& plane = CGAL::exact(face.plane);
+  const RationalPoint3& from = CGAL::exact(q);
+  const Rational fq = plane_value(plane, from);
   for (int id : contour) {
     // X = Q + t (v - Q) with F(X) = 0: t = F(Q) / (F(Q) - F(v)).
-    const Point3& v = solid.vertices()[id];
-    const Exact t = fq / (fq - plane_value(face.plane, v));
-    ring.push_back(face.frame.to_frame(q + t * (v - q)));
+    const RationalPoint3& v = CGAL::exact(solid.vertices()[id]);
+    const Rational t = fq / (fq - plane_value(plane, v));
+    ring.push_back(from_exact<Point2>(face.frame.to_frame(from + t * (v - from))));
   }
   return ring;
 }

@@ -16,6 +16,7 @@
 
 #include "penumbra/geometry/convex_polyhedron.h"
 #include "penumbra/geometry/interval.h"
+#include "penumbra/shadow/linear_shadow.h"
 #include "penumbra/shadow/region.h"
 
 namespace penumbra::detail {
@@ -55,5 +56,8 @@ class ReceiverClip {
 std::optional<Ring2> shadow_polygon(const ConvexPolyhedron& occluder,
                                     const std::vector<Plane3>& volume,
                                     const ReceiverClip& receiver);
+
+// returns clip_by_volumes(receiver.face(), volumes) (linear_shadow.h).
+LinearShadowRings clip_by_volumes(const LinearVolumes& volumes, const ReceiverClip& receiver);
 
 }  // namespace penumbra::detail

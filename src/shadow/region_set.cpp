@@ -46,39 +46,8 @@ Region2 region_of(const PolygonSet& set) {
   return canonical_region(std::move(polygons));
 }
 
-}  // namespace
-
-Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& subtract) {
-  PolygonSet set = join(rings);
-  if (!subtract.empty()) set.difference(join(subtract));
-  return region_of(set);
-}
-
-Region2 unite_regions(const std::vector<Region2>& regions) {
-  std::vector<PolygonWithHoles> parts;
-  for (const Region2& region : regions)
-    for (const Polygon2& polygon : region.polygons) {
-      PolygonWithHoles part(Polygon(polygon.outer.begin(), polygon.outer.end()));
-      for (const Ring2& hole : polygon.holes) part.add_hole(Polygon(hole.begin(), hole.end()));
-      parts.push_back(std::move(part));
-    }
-  if (parts.empty()) return {};
-  PolygonSet set;
-  if (parts.size() == 1)
-    set.insert(parts.front());
-  else
-    set.join(parts.begin(), parts.end());
-  return region_of(set);
-}
-
-std::vector<std::vector<std::size_t>> touching_groups(const std::vector<Ring2>& rings) {
-  // Union-find over the pairs whose boxes (rounded outward) meet and whose closures meet.
-  std::vector<std::size_t> parent(rings.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](std::size_t k) {
-    while (parent[k] != k) k = parent[k] = parent[parent[k]];
-    return k;
-  };
+// returns the pairs of rings whose boxes (rounded outward) meet.
+std::vector<std::pair<std::size_t, std::size_t>> box_pairs(const std::vector<Ring2>& rings) {
   using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t,
                                                           CGAL::Box_intersection_d::ID_EXPLICIT>;
   std::vector<Box> boxes;
@@ -91,6 +60,26 @@ std::vector<std::vector<std::size_t>> touching_groups(const std::vector<Ring2>& 
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
     candidates.emplace_back(a.handle(), b.handle());
   });
+  return candidates;
+}
+
+}  // namespace
+
+Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& subtract) {
+  PolygonSet set = join(rings);
+  if (!subtract.empty()) set.difference(join(subtract));
+  return region_of(set);
+}
+
+std::vector<std::vector<std::size_t>> touching_groups(const std::vector<Ring2>& rings) {
+  // Union-find over the pairs whose boxes (rounded outward) meet and whose closures meet.
+  std::vector<std::size_t> parent(rings.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](std::size_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  const auto candidates = box_pairs(rings);
   std::vector<char> touching(candidates.size());
   for_each_index(candidates.size(), true, [&](std::size_t k) {
     touching[k] = !strictly_apart(rings[candidates[k].first], rings[candidates[k].second]);
@@ -136,11 +125,13 @@ bool touches(const Polygon& polygon, const Ring2& window) {
 
 }  // namespace
 
-std::pair<Region2, Region2> unite_and_complement(
-    const std::vector<Ring2>& rings, const std::vector<std::vector<std::size_t>>& groups,
-    const Ring2& window) {
-  // Each group's union on its own: groups are strictly apart, so their pieces are the
-  // faces the union of all rings has.
+namespace {
+
+// returns the pieces of the union of the rings, given their touching_groups: each group's
+// union on its own (across threads); groups are strictly apart, so their pieces are the
+// faces the union of all rings has.
+std::vector<PolygonWithHoles> group_pieces(const std::vector<Ring2>& rings,
+                                           const std::vector<std::vector<std::size_t>>& groups) {
   std::vector<std::vector<PolygonWithHoles>> pieces(groups.size());
   for_each_index(groups.size(), true, [&](std::size_t g) {
     if (groups[g].size() == 1) {
@@ -155,6 +146,63 @@ std::pair<Region2, Region2> unite_and_complement(
   std::vector<PolygonWithHoles> all;
   for (auto& group : pieces)
     for (auto& piece : group) all.push_back(std::move(piece));
+  return all;
+}
+
+// returns the region the parts make, canonical (area given when known).
+Region2 canonical_parts(const std::vector<PolygonWithHoles>& parts,
+                        std::optional<Exact> area = {}) {
+  std::vector<Polygon2> polygons(parts.size());
+  for_each_index(parts.size(), true, [&](std::size_t k) {
+    polygons[k].outer = to_ring(parts[k].outer_boundary());
+    for (auto hole = parts[k].holes_begin(); hole != parts[k].holes_end(); ++hole)
+      polygons[k].holes.push_back(to_ring(*hole));
+  });
+  return canonical_region(std::move(polygons), std::move(area));
+}
+
+// returns the parts of a canonical region, for a Boolean operation.
+std::vector<PolygonWithHoles> parts_of(const Region2& region) {
+  std::vector<PolygonWithHoles> parts;
+  for (const Polygon2& polygon : region.polygons) {
+    PolygonWithHoles part(Polygon(polygon.outer.begin(), polygon.outer.end()));
+    for (const Ring2& hole : polygon.holes) part.add_hole(Polygon(hole.begin(), hole.end()));
+    parts.push_back(std::move(part));
+  }
+  return parts;
+}
+
+// returns the set the parts cover.
+PolygonSet set_of(const std::vector<PolygonWithHoles>& parts) {
+  PolygonSet set;
+  if (parts.size() == 1) set.insert(parts.front());
+  if (parts.size() > 1) set.join(parts.begin(), parts.end());
+  return set;
+}
+
+}  // namespace
+
+bool any_interiors_overlap(const std::vector<Ring2>& rings) {
+  const auto candidates = box_pairs(rings);
+  return std::any_of(candidates.begin(), candidates.end(), [&](const auto& pair) {
+    return interiors_overlap(rings[pair.first], rings[pair.second]);
+  });
+}
+
+Region2 unite_regions(const std::vector<Region2>& regions) {
+  std::vector<PolygonWithHoles> parts;
+  for (const Region2& region : regions) {
+    std::vector<PolygonWithHoles> more = parts_of(region);
+    parts.insert(parts.end(), more.begin(), more.end());
+  }
+  if (parts.empty()) return {};
+  return region_of(set_of(parts));
+}
+
+std::pair<Region2, Region2> unite_and_complement(
+    const std::vector<Ring2>& rings, const std::vector<std::vector<std::size_t>>& groups,
+    const Ring2& window) {
+  std::vector<PolygonWithHoles> all = group_pieces(rings, groups);
 
   // The lit part: the window less the pieces that touch its boundary (a Boolean
   // difference), whose faces and the pieces' holes are the faces the other pieces may
@@ -217,22 +265,12 @@ std::pair<Region2, Region2> unite_and_complement(
     faces[static_cast<std::size_t>(home[p])].holes.push_back(std::move(hole));
   }
 
-  const auto canonical = [](const std::vector<PolygonWithHoles>& parts,
-                            std::optional<Exact> area = {}) {
-    std::vector<Polygon2> polygons(parts.size());
-    for_each_index(parts.size(), true, [&](std::size_t k) {
-      polygons[k].outer = to_ring(parts[k].outer_boundary());
-      for (auto hole = parts[k].holes_begin(); hole != parts[k].holes_end(); ++hole)
-        polygons[k].holes.push_back(to_ring(*hole));
-    });
-    return canonical_region(std::move(polygons), std::move(area));
-  };
   std::vector<PolygonWithHoles> lit;
   for (LitFace& face : faces) lit.emplace_back(face.outer, face.holes.begin(), face.holes.end());
-  Region2 shadow = rings.size() == 1 ? convex_region(rings.front()) : canonical(all);
+  Region2 shadow = rings.size() == 1 ? convex_region(rings.front()) : canonical_parts(all);
   // The lit part and the shadow tile the window: its area is the window's less theirs.
   const Exact lit_area = exact_number(CGAL::exact(signed_area(window)) - CGAL::exact(shadow.area));
-  return {std::move(shadow), canonical(lit, lit_area)};
+  return {std::move(shadow), canonical_parts(lit, lit_area)};
 }
 
 bool interiors_overlap(const Ring2& a, const Ring2& b) {

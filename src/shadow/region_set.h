@@ -35,4 +35,8 @@ std::pair<Region2, Region2> unite_and_complement(
 // returns true when the interiors of two convex counter-clockwise rings overlap.
 bool interiors_overlap(const Ring2& a, const Ring2& b);
 
+// returns true when the interiors of two of the convex counter-clockwise rings overlap
+// (pairs whose boxes meet are tested).
+bool any_interiors_overlap(const std::vector<Ring2>& rings);
+
 }  // namespace penumbra::detail

@@ -1,5 +1,6 @@
 // The fast lit-set path of the shadow maps (src/shadow/convex_difference.h): a face minus
-// shadow polygons that are strictly apart, walked without an arrangement. Checked against
+// shadow polygons that are strictly apart, walked without an arrangement; and the search
+// for overlapping shadows of region_set.h. Checked against
 // Polygon_set_2 (region_set.h) on random convex polygons with small integer coordinates,
 // so that touching at vertices and along edges, and polygons sharing the window's edges,
 // are frequent.
@@ -13,32 +14,43 @@
 
 using namespace penumbra;
 
+namespace {
+
+const std::vector<Ring2> windows = {
+    {Point2(0, 0), Point2(12, 0), Point2(12, 12), Point2(0, 12)},
+    {Point2(0, 0), Point2(12, 0), Point2(0, 12)},
+    {Point2(2, 0), Point2(10, 0), Point2(12, 6), Point2(6, 12), Point2(0, 6)}};
+
+// returns one to four convex polygons (by iteration), each window cut by one to four random
+// lines through points of the integer grid, other than the whole window.
+std::vector<Ring2> random_polygons(std::mt19937& random, const Ring2& window, int iteration) {
+  std::uniform_int_distribution<int> coordinate(0, 12);
+  std::vector<Ring2> polygons;
+  for (int j = 0; j < 1 + iteration % 4; ++j) {
+    Ring2 ring = window;
+    for (int cut = 0; cut < 1 + (iteration / 4 + j) % 4 && ring.size() >= 3; ++cut) {
+      const Point2 p(coordinate(random), coordinate(random)),
+          q(coordinate(random), coordinate(random));
+      if (p == q) continue;
+      const Exact a = q.y() - p.y(), b = p.x() - q.x();
+      ring = detail::clip(ring, {a, b, -(a * p.x() + b * p.y())});
+    }
+    const auto polygon = detail::ring_with_area(ring);
+    if (polygon && *polygon != canonical_ring(window)) polygons.push_back(*polygon);
+  }
+  return polygons;
+}
+
+}  // namespace
+
 BOOST_AUTO_TEST_SUITE(convex_difference)
 
 BOOST_AUTO_TEST_CASE(agrees_with_polygon_set_2) {
   std::mt19937 random(7);  // fixed seed
-  std::uniform_int_distribution<int> coordinate(0, 12);
-  const std::vector<Ring2> windows = {
-      {Point2(0, 0), Point2(12, 0), Point2(12, 12), Point2(0, 12)},
-      {Point2(0, 0), Point2(12, 0), Point2(0, 12)},
-      {Point2(2, 0), Point2(10, 0), Point2(12, 6), Point2(6, 12), Point2(0, 6)}};
   int tested = 0, several = 0, holes = 0;
   for (int iteration = 0; iteration < 12000; ++iteration) {
     const Ring2& window = windows[static_cast<std::size_t>(iteration % 3)];
-    // one to four polygons, each the window cut by one to four random lines
-    std::vector<Ring2> polygons;
-    for (int j = 0; j < 1 + iteration % 4; ++j) {
-      Ring2 ring = window;
-      for (int cut = 0; cut < 1 + (iteration / 4 + j) % 4 && ring.size() >= 3; ++cut) {
-        const Point2 p(coordinate(random), coordinate(random)),
-            q(coordinate(random), coordinate(random));
-        if (p == q) continue;
-        const Exact a = q.y() - p.y(), b = p.x() - q.x();
-        ring = detail::clip(ring, {a, b, -(a * p.x() + b * p.y())});
-      }
-      const auto polygon = detail::ring_with_area(ring);
-      if (polygon && *polygon != canonical_ring(window)) polygons.push_back(*polygon);
-    }
+    const std::vector<Ring2> polygons = random_polygons(random, window, iteration);
     if (polygons.empty()) continue;
     // strictly_apart against the union: two separate polygons whose areas add
     bool apart = true;
@@ -65,6 +77,28 @@ BOOST_AUTO_TEST_CASE(agrees_with_polygon_set_2) {
   BOOST_TEST(tested > 1000);
   BOOST_TEST(several > 100);
   BOOST_TEST(holes > 10);
+}
+
+// The linear-source path (linear_face_shadow.cpp) looks for overlapping interiors among the
+// pairs of shadows whose boxes meet: checked against every pair, by areas (two convex
+// polygons overlap in their interiors exactly when their union is smaller than the sum of
+// their areas).
+BOOST_AUTO_TEST_CASE(overlapping_interiors_are_found_among_box_pairs) {
+  std::mt19937 random(11);  // fixed seed
+  int overlapping = 0, apart = 0;
+  for (int iteration = 0; iteration < 3000; ++iteration) {
+    const Ring2& window = windows[static_cast<std::size_t>(iteration % 3)];
+    const std::vector<Ring2> shadows = random_polygons(random, window, iteration);
+    bool overlap = false;
+    for (std::size_t i = 0; i < shadows.size(); ++i)
+      for (std::size_t j = i + 1; j < shadows.size(); ++j)
+        overlap = overlap || detail::unite_minus({shadows[i], shadows[j]}).area <
+                                 signed_area(shadows[i]) + signed_area(shadows[j]);
+    BOOST_TEST(detail::any_interiors_overlap(shadows) == overlap);
+    (overlap ? overlapping : apart) += shadows.size() > 1;
+  }
+  BOOST_TEST(overlapping > 100);
+  BOOST_TEST(apart > 100);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
