@@ -45,16 +45,16 @@ std::optional<ConvexPolyhedron> convex_solid(const ModelPart& part) {
 }
 
 // The MeshFace on plane's positive side with the given rings (counter-clockwise outer,
-// clockwise holes, seen from that side) made of pieces, each lying on it with its face
-// number side (part, index and the pieces' object numbers are filled in later).
-MeshFace mesh_face(const std::vector<ConvexPolyhedron>& pieces,
-                   const std::vector<std::size_t>& side, const Plane3& plane,
+// clockwise holes, seen from that side) made of pieces (part, index and the pieces' object
+// numbers are filled in later).
+MeshFace mesh_face(const std::vector<ConvexPolyhedron>& pieces, const Plane3& plane,
                    const std::vector<Point3>& outer,
                    const std::vector<std::vector<Point3>>& holes) {
   MeshFace face;
   if (pieces.size() == 1) {
-    // One convex piece: the face is the piece's, frame and all.
-    const Face& piece = pieces[0].faces()[side[0]];
+    // One convex piece: the face is the piece's on this side, frame and all.
+    const auto& sides = pieces[0].faces();
+    const Face& piece = sides[0].plane == plane ? sides[0] : sides[1];
     face.plane = piece.plane;
     face.frame = piece.frame;
     face.outer = piece.vertices;
@@ -75,14 +75,14 @@ MeshFace mesh_face(const std::vector<ConvexPolyhedron>& pieces,
   const auto add_ring = [&](const std::vector<Point3>& ring) {
     std::vector<Point2> q;
     for (const Point3& p : ring) q.push_back(face.frame.to_frame(p));
-    if (face.ring.empty()) face.ring = q;  // the outer ring comes first
     for (std::size_t k = 0; k < q.size(); ++k) {
       const Point2& a = q[k];
       const Point2& b = q[(k + 1) % q.size()];
       twice += a.x() * b.y() - b.x() * a.y();
     }
+    return q;
   };
-  add_ring(face.outer);
+  face.ring = add_ring(face.outer);
   for (const auto& hole : face.holes) add_ring(hole);
   face.area = twice / 2;
   return face;
@@ -108,19 +108,13 @@ MeshPartObjects mesh_part_objects(const ModelPart& part, const std::string& file
       throw InputError(file, "part " + part.name + ", face " + std::to_string(f),
                        std::string("the face cannot be cut into convex pieces: ") + e.what());
     }
-    // Each piece's faces: the one on the face's own side, and the other.
-    std::vector<std::size_t> front, back;
-    for (const ConvexPolyhedron& piece : pieces) {
-      front.push_back(piece.faces()[0].plane == face.plane ? 0 : 1);
-      back.push_back(1 - front.back());
-    }
-    objects.mesh_faces.push_back(mesh_face(pieces, front, face.plane, face.outer, face.holes));
+    objects.mesh_faces.push_back(mesh_face(pieces, face.plane, face.outer, face.holes));
     // An open surface receives on both sides: the back is the next face.
     if (!face.solid) {
       std::vector<std::vector<Point3>> holes;
       for (const auto& hole : face.holes) holes.push_back(reversed(hole));
       objects.mesh_faces.push_back(
-          mesh_face(pieces, back, face.plane.opposite(), reversed(face.outer), holes));
+          mesh_face(pieces, face.plane.opposite(), reversed(face.outer), holes));
     }
     objects.faces.push_back(std::move(pieces));
   }

@@ -71,6 +71,23 @@ Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& s
   return region_of(set);
 }
 
+Region2 unite_regions(const std::vector<Region2>& regions) {
+  std::vector<PolygonWithHoles> parts;
+  for (const Region2& region : regions)
+    for (const Polygon2& polygon : region.polygons) {
+      PolygonWithHoles part(Polygon(polygon.outer.begin(), polygon.outer.end()));
+      for (const Ring2& hole : polygon.holes) part.add_hole(Polygon(hole.begin(), hole.end()));
+      parts.push_back(std::move(part));
+    }
+  if (parts.empty()) return {};
+  PolygonSet set;
+  if (parts.size() == 1)
+    set.insert(parts.front());
+  else
+    set.join(parts.begin(), parts.end());
+  return region_of(set);
+}
+
 std::vector<std::vector<std::size_t>> touching_groups(const std::vector<Ring2>& rings) {
   // Union-find over the pairs whose boxes (rounded outward) meet and whose closures meet.
   std::vector<std::size_t> parent(rings.size());
@@ -125,13 +142,11 @@ bool touches(const Polygon& polygon, const Ring2& window) {
 
 }  // namespace
 
-namespace {
-
-// returns the pieces of the union of the rings, given their touching_groups: each group's
-// union on its own (across threads); groups are strictly apart, so their pieces are the
-// faces the union of all rings has.
-std::vector<PolygonWithHoles> group_pieces(const std::vector<Ring2>& rings,
-                                           const std::vector<std::vector<std::size_t>>& groups) {
+std::pair<Region2, Region2> unite_and_complement(
+    const std::vector<Ring2>& rings, const std::vector<std::vector<std::size_t>>& groups,
+    const Ring2& window) {
+  // Each group's union on its own: groups are strictly apart, so their pieces are the
+  // faces the union of all rings has.
   std::vector<std::vector<PolygonWithHoles>> pieces(groups.size());
   for_each_index(groups.size(), true, [&](std::size_t g) {
     if (groups[g].size() == 1) {
@@ -146,63 +161,6 @@ std::vector<PolygonWithHoles> group_pieces(const std::vector<Ring2>& rings,
   std::vector<PolygonWithHoles> all;
   for (auto& group : pieces)
     for (auto& piece : group) all.push_back(std::move(piece));
-  return all;
-}
-
-// returns the region the parts make, canonical (area given when known).
-Region2 canonical_parts(const std::vector<PolygonWithHoles>& parts,
-                        std::optional<Exact> area = {}) {
-  std::vector<Polygon2> polygons(parts.size());
-  for_each_index(parts.size(), true, [&](std::size_t k) {
-    polygons[k].outer = to_ring(parts[k].outer_boundary());
-    for (auto hole = parts[k].holes_begin(); hole != parts[k].holes_end(); ++hole)
-      polygons[k].holes.push_back(to_ring(*hole));
-  });
-  return canonical_region(std::move(polygons), std::move(area));
-}
-
-// returns the parts of a canonical region, for a Boolean operation.
-std::vector<PolygonWithHoles> parts_of(const Region2& region) {
-  std::vector<PolygonWithHoles> parts;
-  for (const Polygon2& polygon : region.polygons) {
-    PolygonWithHoles part(Polygon(polygon.outer.begin(), polygon.outer.end()));
-    for (const Ring2& hole : polygon.holes) part.add_hole(Polygon(hole.begin(), hole.end()));
-    parts.push_back(std::move(part));
-  }
-  return parts;
-}
-
-// returns the set the parts cover.
-PolygonSet set_of(const std::vector<PolygonWithHoles>& parts) {
-  PolygonSet set;
-  if (parts.size() == 1) set.insert(parts.front());
-  if (parts.size() > 1) set.join(parts.begin(), parts.end());
-  return set;
-}
-
-}  // namespace
-
-bool any_interiors_overlap(const std::vector<Ring2>& rings) {
-  const auto candidates = box_pairs(rings);
-  return std::any_of(candidates.begin(), candidates.end(), [&](const auto& pair) {
-    return interiors_overlap(rings[pair.first], rings[pair.second]);
-  });
-}
-
-Region2 unite_regions(const std::vector<Region2>& regions) {
-  std::vector<PolygonWithHoles> parts;
-  for (const Region2& region : regions) {
-    std::vector<PolygonWithHoles> more = parts_of(region);
-    parts.insert(parts.end(), more.begin(), more.end());
-  }
-  if (parts.empty()) return {};
-  return region_of(set_of(parts));
-}
-
-std::pair<Region2, Region2> unite_and_complement(
-    const std::vector<Ring2>& rings, const std::vector<std::vector<std::size_t>>& groups,
-    const Ring2& window) {
-  std::vector<PolygonWithHoles> all = group_pieces(rings, groups);
 
   // The lit part: the window less the pieces that touch its boundary (a Boolean
   // difference), whose faces and the pieces' holes are the faces the other pieces may
@@ -265,16 +223,33 @@ std::pair<Region2, Region2> unite_and_complement(
     faces[static_cast<std::size_t>(home[p])].holes.push_back(std::move(hole));
   }
 
+  const auto canonical = [](const std::vector<PolygonWithHoles>& parts,
+                            std::optional<Exact> area = {}) {
+    std::vector<Polygon2> polygons(parts.size());
+    for_each_index(parts.size(), true, [&](std::size_t k) {
+      polygons[k].outer = to_ring(parts[k].outer_boundary());
+      for (auto hole = parts[k].holes_begin(); hole != parts[k].holes_end(); ++hole)
+        polygons[k].holes.push_back(to_ring(*hole));
+    });
+    return canonical_region(std::move(polygons), std::move(area));
+  };
   std::vector<PolygonWithHoles> lit;
   for (LitFace& face : faces) lit.emplace_back(face.outer, face.holes.begin(), face.holes.end());
-  Region2 shadow = rings.size() == 1 ? convex_region(rings.front()) : canonical_parts(all);
+  Region2 shadow = rings.size() == 1 ? convex_region(rings.front()) : canonical(all);
   // The lit part and the shadow tile the window: its area is the window's less theirs.
   const Exact lit_area = exact_number(CGAL::exact(signed_area(window)) - CGAL::exact(shadow.area));
-  return {std::move(shadow), canonical_parts(lit, lit_area)};
+  return {std::move(shadow), canonical(lit, lit_area)};
 }
 
 bool interiors_overlap(const Ring2& a, const Ring2& b) {
   return ring_with_area(clip_to_convex(a, b)).has_value();
+}
+
+bool any_interiors_overlap(const std::vector<Ring2>& rings) {
+  const auto candidates = box_pairs(rings);
+  return std::any_of(candidates.begin(), candidates.end(), [&](const auto& pair) {
+    return interiors_overlap(rings[pair.first], rings[pair.second]);
+  });
 }
 
 }  // namespace penumbra::detail
