@@ -21,9 +21,30 @@ struct VertexInfo {
   int point = 0;  // the ring point, 1-based; 0 for none (a vertex where constraints cross)
 };
 
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>;
-using FaceBase = CGAL::Constrained_triangulation_face_base_2<
-    Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
+// A triangulation element with a creation stamp. CGAL's containers then order and hash
+// handles by the stamps instead of by address (CGAL/Time_stamper.h): among equal choices
+// (cocircular points, everywhere in rectilinear CAD faces) the triangulation's flips
+// follow the order of its faces, which by address changed with the heap from run to run
+// and thread to thread, and the pieces with them.
+template <class Base>
+class Stamped : public Base {
+ public:
+  using Has_timestamp = CGAL::Tag_true;
+  template <class Tds2>
+  struct Rebind_TDS {
+    using Other = Stamped<typename Base::template Rebind_TDS<Tds2>::Other>;
+  };
+  using Base::Base;
+  std::size_t time_stamp() const { return stamp_; }
+  void set_time_stamp(const std::size_t& stamp) { stamp_ = stamp; }
+
+ private:
+  std::size_t stamp_ = std::size_t(-1);
+};
+
+using VertexBase = Stamped<CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>>;
+using FaceBase = Stamped<CGAL::Constrained_triangulation_face_base_2<
+    Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 // Rings may touch (a hole's vertex on the outer ring's edge): the constraint is split there,
 // at a point that exists, so exact intersections cost nothing extra.

@@ -30,6 +30,23 @@ bool segment_meets(const ConvexPolyhedron& solid, const Point3& a, const Point3&
 
 }  // namespace
 
+SourceOcclusion source_occlusion(const ConvexPolyhedron& solid, const Point3& q1,
+                                 const Point3& q2) {
+  SourceOcclusion result;
+  // An occluder with no face turned toward either end point casts nothing, even
+  // when the source lies on it (a tube on a ceiling's lower face).
+  result.casts = !contour(solid, q1).empty() || !contour(solid, q2).empty();
+  if (!result.casts) return result;
+  result.touches = segment_meets(solid, q1, q2);
+  if (result.touches) return result;
+  try {
+    result.volumes = linear_volumes(solid, q1, q2);
+  } catch (const std::domain_error&) {
+    result.edge_on = true;
+  }
+  return result;
+}
+
 std::optional<VisibleSource> visible_source(const Face& face, const Point3& q1, const Point3& q2) {
   const Exact f1 = plane_value(face.plane, q1), f2 = plane_value(face.plane, q2);
   if (!CGAL::is_positive(f1) && !CGAL::is_positive(f2)) return std::nullopt;
@@ -67,12 +84,15 @@ FaceShadow linear_face_shadow(const Face& face, const Point3& q1, const Point3& 
           return face.plane.oriented_side(p) == CGAL::ON_POSITIVE_SIDE;
         }))
       continue;
-    // An occluder with no face turned toward either end point casts nothing, even
-    // when the source lies on it (a tube on a ceiling's lower face).
-    if (contour(solid, source->q1).empty() && contour(solid, source->q2).empty()) continue;
-    if (segment_meets(solid, source->q1, source->q2))
+    std::optional<SourceOcclusion> own;
+    if (!occluder.whole || source->clipped) own = source_occlusion(solid, source->q1, source->q2);
+    const SourceOcclusion& occlusion = own ? *own : *occluder.whole;
+    if (!occlusion.casts) continue;
+    if (occlusion.touches)
       throw std::domain_error("the linear source touches or passes through an occluder");
-    const auto volumes = linear_volumes(solid, source->q1, source->q2);
+    if (occlusion.edge_on)
+      throw std::domain_error("an end of the linear source lies in the plane of a flat occluder");
+    const auto& volumes = occlusion.volumes;
     const LinearShadowRings rings = detail::clip_by_volumes(*volumes, receiver);
     if (!rings.penumbra) continue;
     OccluderShadow shadow{occluder.id, *rings.penumbra, rings.umbra, volumes->kind};
@@ -88,10 +108,11 @@ FaceShadow linear_face_shadow(const Face& face, const Point3& q1, const Point3& 
   }
 
   result.joint_occlusion = detail::any_interiors_overlap(shadows);
-  result.shadow = detail::unite_minus(shadows);
-  result.umbra = detail::unite_minus(umbrae);
-  result.penumbra = detail::unite_minus(shadows, umbrae);
-  result.lit = detail::unite_minus({face.ring}, shadows);
+  detail::ShadowSets sets = detail::shadow_sets(shadows, umbrae, face.ring);
+  result.shadow = std::move(sets.shadow);
+  result.umbra = std::move(sets.umbra);
+  result.penumbra = std::move(sets.penumbra);
+  result.lit = std::move(sets.lit);
   return result;
 }
 

@@ -46,16 +46,33 @@ LinearShadowRings clip_by_volumes(const Face& face, const LinearVolumes& volumes
 
 Ring2 projected_contour(const ConvexPolyhedron& solid, const std::vector<int>& contour,
                         const Face& face, const Point3& q) {
-  // In rationals: the points are made exact, with no lazy construction behind them.
-  Ring2 ring;
+  // X = Q + t (v - Q) with F(X) = 0: t = F(Q) / (F(Q) - F(v)); its frame coordinates are
+  // ((Q - O).u + t (v - Q).u) / u.u and the same along v. In rationals, skipping the zero
+  // terms of axis-aligned planes and frames (each rational product costs a gcd): the points
+  // are exact, with no lazy construction behind them.
   const RationalPlane3& plane = CGAL::exact(face.plane);
   const RationalPoint3& from = CGAL::exact(q);
-  const Rational fq = plane_value(plane, from);
+  const RationalVector3& u = CGAL::exact(face.frame.u());
+  const RationalVector3& v = CGAL::exact(face.frame.v());
+  const Rational& uu = CGAL::exact(face.frame.squared_u());
+  const Rational& vv = CGAL::exact(face.frame.squared_v());
+  const RationalVector3 normal = plane.orthogonal_vector();
+  const auto dot = [](const RationalVector3& a, const RationalVector3& b) {
+    Rational sum;
+    for (int i = 0; i < 3; ++i)
+      if (!CGAL::is_zero(a[i]) && !CGAL::is_zero(b[i])) sum += a[i] * b[i];
+    return sum;
+  };
+  const RationalVector3 offset = from - CGAL::exact(face.frame.origin());
+  const Rational fq = dot(from - CGAL::ORIGIN, normal) + plane.d();
+  const Rational su = dot(offset, u), sv = dot(offset, v);
+  Ring2 ring;
   for (int id : contour) {
-    // X = Q + t (v - Q) with F(X) = 0: t = F(Q) / (F(Q) - F(v)).
-    const RationalPoint3& v = CGAL::exact(solid.vertices()[id]);
-    const Rational t = fq / (fq - plane_value(plane, v));
-    ring.push_back(from_exact<Point2>(face.frame.to_frame(from + t * (v - from))));
+    const RationalVector3 w = CGAL::exact(solid.vertices()[id]) - from;
+    // F(v) - F(Q) = n.(v - Q).
+    const Rational t = -fq / dot(w, normal);
+    ring.push_back(
+        from_exact<Point2>(RationalPoint2((su + t * dot(w, u)) / uu, (sv + t * dot(w, v)) / vv)));
   }
   return ring;
 }

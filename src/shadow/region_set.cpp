@@ -71,6 +71,35 @@ Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& s
   return region_of(set);
 }
 
+ShadowSets shadow_sets(const std::vector<Ring2>& shadows, const std::vector<Ring2>& umbrae,
+                       const Ring2& window) {
+  const Ring2 whole = canonical_ring(window);
+  const auto covers = [&](const std::vector<Ring2>& rings) {
+    return std::any_of(rings.begin(), rings.end(), [&](const Ring2& ring) {
+      return ring.size() == whole.size() && same_ring(canonical_ring(ring), whole);
+    });
+  };
+  ShadowSets sets;
+  if (covers(shadows)) {
+    sets.shadow = convex_region(window);
+    if (covers(umbrae)) {
+      sets.umbra = sets.shadow;
+      return sets;
+    }
+    PolygonSet penumbra = join({window});
+    const PolygonSet umbra = join(umbrae);
+    penumbra.difference(umbra);
+    sets.umbra = region_of(umbra);
+    sets.penumbra = region_of(penumbra);
+    return sets;
+  }
+  const PolygonSet shadow = join(shadows), umbra = join(umbrae);
+  PolygonSet penumbra = shadow, lit = join({window});
+  if (!umbrae.empty()) penumbra.difference(umbra);
+  if (!shadows.empty()) lit.difference(shadow);
+  return {region_of(shadow), region_of(umbra), region_of(penumbra), region_of(lit)};
+}
+
 Region2 unite_regions(const std::vector<Region2>& regions) {
   std::vector<PolygonWithHoles> parts;
   for (const Region2& region : regions)

@@ -13,6 +13,18 @@ namespace penumbra::detail {
 // counter-clockwise rings in subtract.
 Region2 unite_minus(const std::vector<Ring2>& rings, const std::vector<Ring2>& subtract = {});
 
+// The exact sets of a face under a linear source (DESIGN.md, "Conventions").
+struct ShadowSets {
+  Region2 shadow, umbra, penumbra, lit;
+};
+
+// returns shadow = the union of shadows, umbra = the union of umbrae, penumbra = shadow -
+// umbra and lit = window - shadow, for convex counter-clockwise rings inside the convex
+// window: each union is made once (not once per set it enters), and a ring that is the
+// whole window makes its union the window without an arrangement.
+ShadowSets shadow_sets(const std::vector<Ring2>& shadows, const std::vector<Ring2>& umbrae,
+                       const Ring2& window);
+
 // returns the union of regions (each canonical, in one frame).
 Region2 unite_regions(const std::vector<Region2>& regions);
 

@@ -165,6 +165,22 @@ class LightShading {
   std::vector<std::size_t> active_, far_;  // receiver slots to compute / beyond range
 };
 
+// returns make(solid) for each object that is a candidate occluder of some receiver (a
+// default T for the others), made across threads.
+template <class T, class Make>
+std::vector<T> per_candidate(const Scene& scene,
+                             const std::vector<std::vector<std::size_t>>& candidates, bool parallel,
+                             Make make) {
+  std::vector<char> needed(scene.objects.size(), 0);
+  for (const auto& list : candidates)
+    for (std::size_t occluder : list) needed[occluder] = 1;
+  std::vector<T> made(scene.objects.size());
+  for_each_index(scene.objects.size(), parallel, [&](std::size_t o) {
+    if (needed[o]) made[o] = make(scene.objects[o].solid);
+  });
+  return made;
+}
+
 LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receivers,
                          const std::vector<std::size_t>& rank, std::size_t light_index,
                          const ShadowOptions& options) {
@@ -198,13 +214,9 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
         std::remove_if(list.begin(), list.end(), [&](std::size_t o) { return back[o] != 0; }),
         list.end());
   // The shadow volume of each occluder depends only on the light: build it once.
-  std::vector<char> needed(scene.objects.size(), 0);
-  for (const auto& list : candidates)
-    for (std::size_t occluder : list) needed[occluder] = 1;
-  std::vector<std::vector<Plane3>> volumes(scene.objects.size());
-  for_each_index(scene.objects.size(), options.parallel, [&](std::size_t o) {
-    if (needed[o]) volumes[o] = shadow_volume(scene.objects[o].solid, position);
-  });
+  const auto volumes = per_candidate<std::vector<Plane3>>(
+      scene, candidates, options.parallel,
+      [&](const ConvexPolyhedron& solid) { return shadow_volume(solid, position); });
   LightShadows result = shading.shade(candidates, [&](const Receiver& receiver,
                                                       const std::vector<std::size_t>& occluders) {
     const Face& face = shading.face(receiver);
@@ -254,11 +266,17 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   };
   shading.list_far_occluders(q1, q2, candidates_of);
 
+  const auto candidates = shading.active_candidates(candidates_of);
+  // What each occluder does under the whole tube depends only on the tube: made once
+  // (the faces whose plane cuts the tube make their own, Fig. 7 S3).
+  const auto whole = per_candidate<SourceOcclusion>(
+      scene, candidates, options.parallel,
+      [&](const ConvexPolyhedron& solid) { return source_occlusion(solid, q1, q2); });
   LightShadows result = shading.shade(
-      shading.active_candidates(candidates_of),
-      [&](const Receiver& receiver, const std::vector<std::size_t>& candidates) {
+      candidates, [&](const Receiver& receiver, const std::vector<std::size_t>& occluders_of) {
         std::vector<Occluder> occluders;
-        for (std::size_t o : candidates) occluders.push_back({o, &scene.objects[o].solid});
+        for (std::size_t o : occluders_of)
+          occluders.push_back({o, &scene.objects[o].solid, &whole[o]});
         try {
           return linear_face_shadow(shading.face(receiver), q1, q2, std::move(occluders));
         } catch (const std::domain_error&) {

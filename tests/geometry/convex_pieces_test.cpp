@@ -7,7 +7,9 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <memory>
 #include <set>
+#include <thread>
 
 #include "penumbra/base/random.h"
 #include "penumbra/geometry/convex_pieces.h"
@@ -223,6 +225,53 @@ BOOST_AUTO_TEST_CASE(pieces_depend_on_the_polygon_not_on_where_its_rings_start) 
     std::rotate(rotated.begin(), rotated.begin() + static_cast<std::ptrdiff_t>(shift),
                 rotated.end());
     BOOST_TEST((convex_pieces(flat_plane, rotated, {}) == octagon_pieces));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(pieces_do_not_depend_on_the_heap_or_the_thread) {
+  // A face of the IFC house (fixtures/meshes/AC14-FZK-Haus.ifc.gz: a window frame with two
+  // panes, x = 11.88, here (y, z)): rectilinear, so full of cocircular quadruples, where a
+  // constrained Delaunay triangulation's flips follow the order of its faces' addresses
+  // (the house gave 5 or 6 pieces from run to run). The pieces must be the same after other
+  // allocations and in other threads.
+  const Case frame{"window frame",
+                   {{6.5023937225341797, 0.80000019073486328},
+                    {6.5723934173583984, 0.80000019073486328},
+                    {7.4673938751220703, 0.79999923706054688},
+                    {8.5023937225341797, 0.79999923706054688},
+                    {8.5023937225341797, 2},
+                    {6.5023937225341797, 2}},
+                   {{{7.4673938751220703, 1.9299993515014648},
+                     {7.4673938751220703, 0.86999988555908203},
+                     {6.5723934173583984, 0.86999988555908203},
+                     {6.5723934173583984, 1.9299993515014648}},
+                    {{8.4323940277099609, 1.9299993515014648},
+                     {8.4323940277099609, 0.86999988555908203},
+                     {7.5373935699462891, 0.86999988555908203},
+                     {7.5373935699462891, 1.9299993515014648}}}};
+  // As in the file: in the plane x = 11.88 (rounded to float), (y, z) from the case.
+  const double x = 11.880000114440918;
+  const auto place = [&](const std::array<double, 2>& p) { return Point3(x, p[0], p[1]); };
+  Ring outer;
+  std::vector<Ring> holes;
+  for (const auto& p : frame.outer) outer.push_back(place(p));
+  for (const auto& hole : frame.holes) {
+    holes.emplace_back();
+    for (const auto& p : hole) holes.back().push_back(place(p));
+  }
+  const Plane3 plane(1, 0, 0, -x);
+  const auto reference = convex_pieces(plane, outer, holes);
+  // Other heaps: blocks of other sizes allocated first, here and in fresh threads.
+  const auto after_allocations = [&](int round) {
+    std::vector<std::unique_ptr<char[]>> other;
+    for (int k = 0; k < 331 * round; ++k) other.emplace_back(new char[24 + (k % 7) * 40]);
+    return convex_pieces(plane, outer, holes);
+  };
+  for (int round = 1; round <= 12; ++round) {
+    BOOST_TEST((after_allocations(round) == reference), "after allocations, round " << round);
+    std::vector<std::vector<Point3>> there;
+    std::thread([&] { there = after_allocations(round); }).join();
+    BOOST_TEST((there == reference), "in another thread, round " << round);
   }
 }
 

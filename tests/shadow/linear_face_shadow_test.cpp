@@ -4,6 +4,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <optional>
 #include <random>
 
 #include "linear_oracle.h"
@@ -131,6 +132,53 @@ BOOST_AUTO_TEST_CASE(two_plates_under_a_tube_overlap_in_penumbra_only) {
   // Plate a from Q1 = (0, .5, 4) covers x in [0, 2] (X = 2v - Q); from Q2 = (2.5, .5, 4)
   // x in [-2.5, -0.5]: disjoint, so a alone casts no umbra.
   BOOST_TEST(!shadow.occluders[1].umbra.has_value());
+}
+
+BOOST_AUTO_TEST_CASE(an_occluders_whole_source_volumes_serve_only_faces_that_see_all_of_it) {
+  // A scene makes each occluder's volumes under the whole tube once (source_occlusion) and
+  // hands them to every face: the maps must be those made without them, on the floor (which
+  // sees the whole tube) and on a wall whose plane cuts the tube (Fig. 7, S3: its visible
+  // part is shorter, so the whole tube's volumes must not be used there).
+  std::mt19937 random(11);  // fixed: failures must reproduce
+  std::uniform_int_distribution<int> corner(-4, 3), size(1, 2), height(1, 3);
+  const auto floor = box(-6, -6, -1, 6, 6, 0);
+  const Face& top = face_with_plane(floor, Plane3(0, 0, 1, 0));
+  const auto wall = box(-6, -6, 0, -5, 6, 8);
+  const Face& inner = face_with_plane(wall, Plane3(1, 0, 0, 5));  // x = -5, facing +x
+  const Point3 q1(-7, 1, 6), q2(4, -1, 7);                        // crosses the wall's plane x = -5
+  int compared = 0;
+  for (int scene = 0; scene < 20; ++scene) {
+    std::vector<ConvexPolyhedron> solids;
+    for (int k = 0; k < 4; ++k) {
+      const int x = corner(random), y = corner(random), z = height(random);
+      solids.push_back(box(x, y, z, x + size(random), y + size(random), z + 1));
+    }
+    std::vector<SourceOcclusion> whole;
+    for (const auto& solid : solids) whole.push_back(source_occlusion(solid, q1, q2));
+    for (const Face* face : {&top, &inner}) {
+      std::vector<Occluder> plain, prepared;
+      for (std::size_t k = 0; k < solids.size(); ++k) {
+        plain.push_back({k, &solids[k]});
+        prepared.push_back({k, &solids[k], &whole[k]});
+      }
+      std::optional<FaceShadow> expected;
+      try {
+        expected = penumbra::linear_face_shadow(*face, q1, q2, plain);
+      } catch (const std::domain_error&) {
+        BOOST_CHECK_THROW(penumbra::linear_face_shadow(*face, q1, q2, prepared), std::domain_error);
+        continue;
+      }
+      const FaceShadow got = penumbra::linear_face_shadow(*face, q1, q2, prepared);
+      BOOST_TEST((got.shadow == expected->shadow), "scene " << scene);
+      BOOST_TEST((got.umbra == expected->umbra), "scene " << scene);
+      BOOST_TEST((got.penumbra == expected->penumbra), "scene " << scene);
+      BOOST_TEST((got.lit == expected->lit), "scene " << scene);
+      BOOST_TEST(got.occluders.size() == expected->occluders.size());
+      BOOST_TEST(got.source_clipped == (face == &inner));
+      compared += !expected->occluders.empty();
+    }
+  }
+  BOOST_TEST(compared >= 10);  // the scenes cast shadows on both faces, not only nothing
 }
 
 BOOST_AUTO_TEST_SUITE_END()

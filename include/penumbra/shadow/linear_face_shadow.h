@@ -11,12 +11,29 @@
 
 #include "penumbra/geometry/convex_polyhedron.h"
 #include "penumbra/shadow/face_shadow.h"
+#include "penumbra/shadow/linear_volumes.h"
 
 namespace penumbra {
+
+// What an occluder does under a whole source q1q2 (the checks and volumes of
+// linear_face_shadow). None of it depends on the receiving face unless the face's plane
+// cuts the source (Fig. 7, S3), so a scene makes it once per occluder and source.
+struct SourceOcclusion {
+  bool casts = false;    // some face of the occluder is turned toward an end point
+  bool touches = false;  // the closed source meets the closed occluder
+  bool edge_on = false;  // an end point lies in the plane of a flat occluder (unsupported)
+  std::optional<LinearVolumes> volumes;  // when it casts, does not touch and is not edge-on
+};
+
+// returns what solid does under the source q1q2.
+SourceOcclusion source_occlusion(const ConvexPolyhedron& solid, const Point3& q1, const Point3& q2);
 
 struct Occluder {
   std::size_t id;
   const ConvexPolyhedron* solid;
+  // source_occlusion(*solid, q1, q2) for the whole source, when known; used for the faces
+  // that see all of it.
+  const SourceOcclusion* whole = nullptr;
 };
 
 // The part of the source a face can see (Fig. 7): q1q2 cut by the face's plane.
