@@ -22,6 +22,10 @@ double rounded(const Rational& x) {
   return CGAL::to_double(x) + 0.0;
 }
 double rounded(const Exact& x) {
+  // An interval that is a point is the exact value (most areas and frame lengths of CAD
+  // models are doubles): no exact evaluation needed.
+  const auto& approx = x.approx();
+  if (approx.is_point()) return approx.inf() + 0.0;
   return rounded(x.exact());
 }
 
