@@ -47,9 +47,9 @@ LinearShadowRings clip_by_volumes(const Face& face, const LinearVolumes& volumes
 Ring2 projected_contour(const ConvexPolyhedron& solid, const std::vector<int>& contour,
                         const Face& face, const Point3& q) {
   // X = Q + t (v - Q) with F(X) = 0: t = F(Q) / (F(Q) - F(v)); its frame coordinates are
-  // ((Q - O).u + t (v - Q).u) / u.u and the same along v. In rationals, skipping the zero
-  // terms of axis-aligned planes and frames (each rational product costs a gcd): the points
-  // are exact, with no lazy construction behind them.
+  // ((Q - O).u + t (v - Q).u) / u.u and the same along v. In rationals (sparse_dot,
+  // receiver_clip.h): the points are exact, with no lazy construction behind them.
+  using detail::sparse_dot;
   const RationalPlane3& plane = CGAL::exact(face.plane);
   const RationalPoint3& from = CGAL::exact(q);
   const RationalVector3& u = CGAL::exact(face.frame.u());
@@ -57,22 +57,16 @@ Ring2 projected_contour(const ConvexPolyhedron& solid, const std::vector<int>& c
   const Rational& uu = CGAL::exact(face.frame.squared_u());
   const Rational& vv = CGAL::exact(face.frame.squared_v());
   const RationalVector3 normal = plane.orthogonal_vector();
-  const auto dot = [](const RationalVector3& a, const RationalVector3& b) {
-    Rational sum;
-    for (int i = 0; i < 3; ++i)
-      if (!CGAL::is_zero(a[i]) && !CGAL::is_zero(b[i])) sum += a[i] * b[i];
-    return sum;
-  };
   const RationalVector3 offset = from - CGAL::exact(face.frame.origin());
-  const Rational fq = dot(from - CGAL::ORIGIN, normal) + plane.d();
-  const Rational su = dot(offset, u), sv = dot(offset, v);
+  const Rational fq = sparse_dot(from - CGAL::ORIGIN, normal) + plane.d();
+  const Rational su = sparse_dot(offset, u), sv = sparse_dot(offset, v);
   Ring2 ring;
   for (int id : contour) {
     const RationalVector3 w = CGAL::exact(solid.vertices()[id]) - from;
     // F(v) - F(Q) = n.(v - Q).
-    const Rational t = -fq / dot(w, normal);
-    ring.push_back(
-        from_exact<Point2>(RationalPoint2((su + t * dot(w, u)) / uu, (sv + t * dot(w, v)) / vv)));
+    const Rational t = -fq / sparse_dot(w, normal);
+    ring.push_back(from_exact<Point2>(
+        RationalPoint2((su + t * sparse_dot(w, u)) / uu, (sv + t * sparse_dot(w, v)) / vv)));
   }
   return ring;
 }

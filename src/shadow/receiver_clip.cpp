@@ -26,17 +26,6 @@ Point2 exact_point(ExactPoint2&& point) {
   return Point2(Point2::Rep(std::move(point)));
 }
 
-// returns x w[0] + y w[1] + z w[2], skipping zero terms: the frames of axis-aligned
-// faces are mostly zeros, and rational products cost a gcd each.
-Rational dot(const Rational& x, const Rational& y, const Rational& z, const Rational (&w)[3]) {
-  Rational sum;
-  const Rational* terms[3] = {&x, &y, &z};
-  for (int i = 0; i < 3; ++i)
-    if (CGAL::sign(w[i]) != CGAL::ZERO && CGAL::sign(*terms[i]) != CGAL::ZERO)
-      sum += *terms[i] * w[i];
-  return sum;
-}
-
 }  // namespace
 
 ReceiverClip::ReceiverClip(const Face& face) : face_(&face) {
@@ -52,14 +41,14 @@ ReceiverClip::ReceiverClip(const Face& face) : face_(&face) {
     u_box_[i] = CGAL::approx(face.frame.u())[i];
     v_box_[i] = CGAL::approx(face.frame.v())[i];
   }
-  const Rational uu = dot(u_[0], u_[1], u_[2], u_);
-  const Rational vv = dot(v_[0], v_[1], v_[2], v_);
+  const Rational uu = sparse_dot(u_, u_);
+  const Rational vv = sparse_dot(v_, v_);
   // face_ring(face), the frame coordinates (d.u / u.u, d.v / v.v) of each vertex.
   std::vector<ExactPoint2> points;
   for (const Point3& vertex : face.vertices) {
     const auto& p = CGAL::exact(vertex);
     const Rational d[3] = {p[0] - origin_[0], p[1] - origin_[1], p[2] - origin_[2]};
-    points.emplace_back(dot(d[0], d[1], d[2], u_) / uu, dot(d[0], d[1], d[2], v_) / vv);
+    points.emplace_back(sparse_dot(d, u_) / uu, sparse_dot(d, v_) / vv);
   }
   const std::size_t n = points.size();
   for (std::size_t k = 0; k < n; ++k) {
@@ -79,8 +68,8 @@ ReceiverClip::ReceiverClip(const Face& face) : face_(&face) {
 ReceiverClip::Line ReceiverClip::trace(const Plane3& plane) const {
   // restrict_to: n.u s + n.v t + plane(o) for the point o + s u + t v.
   const auto& p = CGAL::exact(plane);
-  return {dot(p.a(), p.b(), p.c(), u_), dot(p.a(), p.b(), p.c(), v_),
-          dot(p.a(), p.b(), p.c(), origin_) + p.d()};
+  const auto normal = p.orthogonal_vector();
+  return {sparse_dot(normal, u_), sparse_dot(normal, v_), sparse_dot(normal, origin_) + p.d()};
 }
 
 std::optional<Ring2> ReceiverClip::clip(const std::vector<Plane3>& volume) const {

@@ -21,6 +21,17 @@
 
 namespace penumbra::detail {
 
+// returns a . b over three coordinates, skipping the products with a zero factor: the planes
+// and frames of axis-aligned faces (the usual case in CAD) are mostly zeros, and each
+// rational product costs a gcd. The same value.
+template <class A, class B>
+Exact::ET sparse_dot(const A& a, const B& b) {
+  Exact::ET sum;
+  for (int i = 0; i < 3; ++i)
+    if (!CGAL::is_zero(a[i]) && !CGAL::is_zero(b[i])) sum += a[i] * b[i];
+  return sum;
+}
+
 class ReceiverClip {
  public:
   // prepares face: its ring and frame, exact and in intervals.

@@ -75,9 +75,8 @@ ShadowSets shadow_sets(const std::vector<Ring2>& shadows, const std::vector<Ring
                        const Ring2& window) {
   const Ring2 whole = canonical_ring(window);
   const auto covers = [&](const std::vector<Ring2>& rings) {
-    return std::any_of(rings.begin(), rings.end(), [&](const Ring2& ring) {
-      return ring.size() == whole.size() && same_ring(canonical_ring(ring), whole);
-    });
+    return std::any_of(rings.begin(), rings.end(),
+                       [&](const Ring2& ring) { return same_ring(ring, whole); });
   };
   ShadowSets sets;
   if (covers(shadows)) {

@@ -19,9 +19,9 @@ struct ShadowSets {
 };
 
 // returns shadow = the union of shadows, umbra = the union of umbrae, penumbra = shadow -
-// umbra and lit = window - shadow, for convex counter-clockwise rings inside the convex
-// window: each union is made once (not once per set it enters), and a ring that is the
-// whole window makes its union the window without an arrangement.
+// umbra and lit = window - shadow, for canonical convex counter-clockwise rings (as
+// ring_with_area gives them) inside the convex window: each union is made once (not once per set it
+// enters), and a ring that is the whole window makes its union the window without an arrangement.
 ShadowSets shadow_sets(const std::vector<Ring2>& shadows, const std::vector<Ring2>& umbrae,
                        const Ring2& window);
 
