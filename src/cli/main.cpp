@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   register_relight(app);
   register_serve(app);
   register_sun(app);
+  register_sun_hours(app);
 
   try {
     app.parse(argc, argv);

@@ -13,6 +13,7 @@
 #include "penumbra/scene/load_scene.h"
 #include "penumbra/scene/object_selection.h"
 #include "penumbra/shadow/shadow_map.h"
+#include "shadow_diagram.h"
 #include "verbs.h"
 
 namespace penumbra::cli {
@@ -33,6 +34,7 @@ struct ShadowsArguments {
   double range_lux = 0;
   bool stats = false;
   std::string receivers;
+  std::string times;
 };
 
 int run_shadows(const ShadowsArguments& arguments) {
@@ -57,6 +59,16 @@ int run_shadows(const ShadowsArguments& arguments) {
   if (arguments.range_lux > 0) options.range_lux = arguments.range_lux;
   if (!arguments.receivers.empty())
     options.receivers = faces_of_objects(scene, select_objects(scene, arguments.receivers));
+  if (!arguments.times.empty()) {
+    // A shadow diagram: JSON and a plan-view SVG over several times (shadow_diagram.h).
+    for (const auto& [given, name] :
+         {std::pair{!arguments.dxf.empty(), "--dxf"},
+          std::pair{!arguments.report.empty(), "--report"}, std::pair{arguments.loops, "--loops"},
+          std::pair{arguments.view != "top", "--view"}})
+      if (given) throw InputError("", name, "is for one time, not with --times");
+    return run_shadow_diagram(scene, {arguments.scene, arguments.light, arguments.times,
+                                      arguments.output, arguments.svg, arguments.exact, options});
+  }
   const ShadowResult& result = keep_until_exit(compute_shadows(scene, options));
   const auto shaded = Clock::now();
   for (const std::string& warning : result.warnings)
@@ -144,6 +156,10 @@ void register_shadows(CLI::App& app) {
   verb->add_option("--receivers", arguments->receivers,
                    "only the faces of these objects: NAME[,NAME...], each a shell pattern "
                    "(e.g. ground or 'building1*'); the others still cast shadows");
+  verb->add_option("--times", arguments->times,
+                   "shadow diagram of the scene's sun: FROM,TO,STEP (e.g. "
+                   "2026-03-21T09:00,2026-03-21T15:00,1h) or T1,T2,...; JSON with a time axis "
+                   "and a plan-view SVG with a layer per time");
   verb->add_flag("--stats", arguments->stats,
                  "print faces, pairs tested and time per light on stderr");
   verb->callback([arguments] { exit_status() = run_shadows(*arguments); });

@@ -44,18 +44,7 @@ int run_sun(const SunArguments& arguments) {
   const Scene& scene = load_scene_until_exit(arguments.scene);
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
-  if (scene.suns.empty())
-    throw InputError(arguments.scene, "lights",
-                     "no light is a sun given by place and time (\"sun\": {\"latitude\", ...})");
-  const SunPlacement* sun = &scene.suns.front();
-  if (!arguments.light.empty()) {
-    sun = nullptr;
-    for (const SunPlacement& candidate : scene.suns)
-      if (candidate.name == arguments.light) sun = &candidate;
-    if (!sun) throw InputError("", "--light", "no sun named '" + arguments.light + "'");
-  } else if (scene.suns.size() > 1) {
-    throw InputError("", "--light", "the scene has several suns: name one");
-  }
+  const SunPlacement* sun = &choose_sun(scene, arguments.scene, arguments.light);
   // Times without an offset are on the clock of the scene's sun time (issue 19).
   const int offset = sun->time.offset_minutes;
   const sun::CivilDate day = sun::civil_date_time(sun->time.utc, offset).date;

@@ -32,6 +32,7 @@ void register_basis(CLI::App& app);
 void register_relight(CLI::App& app);
 void register_serve(CLI::App& app);
 void register_sun(CLI::App& app);
+void register_sun_hours(CLI::App& app);
 
 // returns the --exposure value given on the command line: 0 for "auto", the value
 // when it is a positive number, -1 otherwise (shared by render and raytrace).
@@ -53,5 +54,11 @@ T& keep_until_exit(T&& value) {
 
 // returns the scene of path (load_scene), kept until the process exits.
 const Scene& load_scene_until_exit(const std::string& path);
+
+// returns the sun (a light given by place and time) of the scene loaded from path that
+// --light names, or its only one when name is empty. Throws InputError when there is none,
+// when name names none, or when the scene has several and name is empty.
+const SunPlacement& choose_sun(const Scene& scene, const std::string& path,
+                               const std::string& name);
 
 }  // namespace penumbra::cli

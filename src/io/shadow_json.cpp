@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "face_json.h"
 #include "json_emitter.h"
 #include "penumbra/base/parallel.h"
 #include "penumbra/io/rational.h"
@@ -14,144 +15,6 @@ namespace penumbra::io {
 namespace {
 
 using nlohmann::json;
-
-// rounds from the exact value, never from the lazy kernel's interval, whose width
-// depends on what was evaluated before (and so on threads); adding +0.0 turns -0.0
-// into 0.0, so that equal points print alike.
-double rounded(const Rational& x) {
-  return CGAL::to_double(x) + 0.0;
-}
-double rounded(const Exact& x) {
-  // An interval that is a point is the exact value (most areas and frame lengths of CAD
-  // models are doubles): no exact evaluation needed.
-  const auto& approx = x.approx();
-  if (approx.is_point()) return approx.inf() + 0.0;
-  return rounded(x.exact());
-}
-
-void emit_point(JsonEmitter& out, const RationalPoint3& p) {
-  out.begin_array();
-  for (int i = 0; i < 3; ++i) out.number(rounded(p[i]));
-  out.end_array();
-}
-void emit_point(JsonEmitter& out, const Point3& p) {
-  // A point given as doubles is its own rounding (most vertices of a scene are).
-  const auto& approx = p.approx();
-  if (!approx.x().is_point() || !approx.y().is_point() || !approx.z().is_point())
-    return emit_point(out, CGAL::exact(p));
-  out.begin_array();
-  for (int i = 0; i < 3; ++i) out.number(approx[i].inf() + 0.0);
-  out.end_array();
-}
-void emit_exact_point(JsonEmitter& out, const RationalPoint3& p) {
-  out.begin_array();
-  for (int i = 0; i < 3; ++i) out.string(rational_string(p[i]));
-  out.end_array();
-}
-
-// the unit vector along v, rounded from v's exact coordinates.
-void emit_unit(JsonEmitter& out, const Vector3& v) {
-  const RationalVector3& exact = CGAL::exact(v);
-  const double x = rounded(exact.x()), y = rounded(exact.y()), z = rounded(exact.z());
-  const double length = std::sqrt(x * x + y * y + z * z);
-  out.begin_array();
-  for (double c : {x, y, z}) out.number(c / length + 0.0);
-  out.end_array();
-}
-
-// A receiving face while it is written. Its shadow, umbra, lit holes and occluder polygons
-// repeat the same points (the same lazy handles), each converted from frame to world
-// coordinates in rationals: rounded holds each point's world doubles, computed once and
-// across threads (a ground under a city has 10^5 of them), world maps a point's identity
-// to its slot.
-struct FaceOutput {
-  const ReceivingFace& face;
-  const Ring2& ring;  // the outer ring's points in the frame
-  std::unordered_map<std::size_t, std::size_t> world;
-  std::vector<std::array<double, 3>> rounded;
-  std::unordered_map<const OccluderShadow*, double> occluder_area;  // m^2, computed alike
-};
-
-// the ring's points in the world: a face vertex as it is, any other point computed in
-// rationals from its frame coordinates (no lazy construction made for output).
-void emit_ring(JsonEmitter& out, const Ring2& ring, const FaceOutput& output, bool exact) {
-  const ReceivingFace& face = output.face;
-  out.begin_array();
-  for (const Point2& p : ring) {
-    const auto vertex = std::find_if(output.ring.begin(), output.ring.end(), [&](const Point2& q) {
-      return CGAL::identical(p, q) || p == q;
-    });
-    if (vertex != output.ring.end()) {
-      const Point3& world = face.outer[static_cast<std::size_t>(vertex - output.ring.begin())];
-      if (exact)
-        emit_exact_point(out, CGAL::exact(world));
-      else
-        emit_point(out, world);
-      continue;
-    }
-    if (!exact) {
-      if (const auto known = output.world.find(p.id()); known != output.world.end()) {
-        out.begin_array();
-        for (double x : output.rounded[known->second]) out.number(x);
-        out.end_array();
-        continue;
-      }
-    }
-    const RationalPoint3 world = face.frame.to_world(CGAL::exact(p));
-    if (exact)
-      emit_exact_point(out, world);
-    else
-      emit_point(out, world);
-  }
-  out.end_array();
-}
-
-// a polygon's rings: {"holes": [...], "outer": [...]}.
-void emit_rings(JsonEmitter& out, const Polygon2& polygon, const FaceOutput& face, bool exact) {
-  out.key("holes");
-  out.begin_array();
-  for (const Ring2& hole : polygon.holes) emit_ring(out, hole, face, exact);
-  out.end_array();
-  out.key("outer");
-  emit_ring(out, polygon.outer, face, exact);
-}
-
-void emit_region(JsonEmitter& out, const Region2& region, const FaceOutput& face, bool exact) {
-  out.begin_object();
-  out.key("area");
-  out.number(world_area(region, face.face.frame));
-  out.key("polygons");
-  out.begin_array();
-  for (const Polygon2& polygon : region.polygons) {
-    out.begin_object();
-    if (exact) {
-      out.key("exact");
-      out.begin_object();
-      emit_rings(out, polygon, face, true);
-      out.end_object();
-    }
-    emit_rings(out, polygon, face, false);
-    out.end_object();
-  }
-  out.end_array();
-  out.end_object();
-}
-
-// the plane scaled to a unit normal, in doubles; exactly, scaled so that its largest
-// normal component has magnitude 1 (a canonical exact form).
-void emit_plane(JsonEmitter& out, const Plane3& plane, bool exact) {
-  out.begin_array();
-  if (exact) {
-    for (const Rational& k : canonical_plane(plane)) out.string(rational_string(k));
-  } else {
-    const RationalPlane3& rational = CGAL::exact(plane);
-    const double a = rounded(rational.a()), b = rounded(rational.b()), c = rounded(rational.c()),
-                 d = rounded(rational.d());
-    const double length = std::sqrt(a * a + b * b + c * c);
-    for (double k : {a, b, c, d}) out.number(k / length + 0.0);
-  }
-  out.end_array();
-}
 
 const char* kind_of(const Light& light) {
   if (std::holds_alternative<PointLight>(light.source)) return "point";
@@ -355,33 +218,6 @@ void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& sha
   out.end_object();
 }
 
-// a world ring of exact points.
-void emit_world_ring(JsonEmitter& out, const std::vector<Point3>& ring, bool exact) {
-  out.begin_array();
-  for (const Point3& p : ring)
-    if (exact)
-      emit_exact_point(out, CGAL::exact(p));
-    else
-      emit_point(out, p);
-  out.end_array();
-}
-
-// the face's boundary: its ring, or for a face of a mesh part {"holes": [...], "outer": [...]}.
-void emit_boundary(JsonEmitter& out, const ReceivingFace& face, bool exact) {
-  if (!face.holes) {
-    emit_world_ring(out, face.outer, exact);
-    return;
-  }
-  out.begin_object();
-  out.key("holes");
-  out.begin_array();
-  for (const auto& hole : *face.holes) emit_world_ring(out, hole, exact);
-  out.end_array();
-  out.key("outer");
-  emit_world_ring(out, face.outer, exact);
-  out.end_object();
-}
-
 // the fewest occluders for which a face's world points and areas are computed ahead.
 constexpr std::size_t kCachedOccluders = 32;
 
@@ -437,42 +273,14 @@ void emit_face(JsonEmitter& out, const Scene& scene, const ShadowResult& result,
                const ShadowJsonOptions& options) {
   const ReceivingFace face = receiving_face(scene, result, r);
   const FaceOutput output = prepare_output(face, result, r);
-  out.begin_object();
-  out.key("area");
-  out.number(world_area(face.area, face.frame));
-  out.key("boundary");
-  emit_boundary(out, face, false);
-  if (options.exact) {
-    out.key("exact");
-    out.begin_object();
-    out.key("boundary");
-    emit_boundary(out, face, true);
-    out.key("plane");
-    emit_plane(out, face.plane, true);
-    out.end_object();
-  }
-  out.key("face");
-  out.integer(face.face);
-  out.key("frame");
-  out.begin_object();
-  out.key("origin");
-  emit_point(out, face.frame.origin());
-  out.key("u");
-  emit_unit(out, face.frame.u());
-  out.key("v");
-  emit_unit(out, face.frame.v());
-  out.end_object();
-  out.key("lights");
-  out.begin_array();
-  for (const LightShadows& shadows : result.lights)
-    emit_light(out, scene.lights[shadows.light].name, shadows.faces[r], scene, output,
-               options.exact);
-  out.end_array();
-  out.key("object");
-  out.string(face.object);
-  out.key("plane");
-  emit_plane(out, face.plane, false);
-  out.end_object();
+  emit_face_entry(out, output, options.exact, [&] {
+    out.key("lights");
+    out.begin_array();
+    for (const LightShadows& shadows : result.lights)
+      emit_light(out, scene.lights[shadows.light].name, shadows.faces[r], scene, output,
+                 options.exact);
+    out.end_array();
+  });
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "penumbra/io/shadow_drawing.h"
 #include "penumbra/scene/camera_frame.h"
+#include "svg_drawing.h"
 #include "svg_text.h"
 
 namespace penumbra::io {
@@ -13,48 +14,8 @@ namespace {
 
 using nlohmann::json;
 using namespace vector_ops;
-using Flat = std::array<double, 2>;
 
 const char* const palette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
-
-// A projection of world points to drawing coordinates (before fitting to the sheet);
-// nullopt when a point cannot be drawn (behind the camera).
-using Projection = std::function<std::optional<Flat>(const Vec3d&)>;
-
-struct Shape {
-  std::vector<std::vector<Flat>> rings;
-  std::string style;
-};
-
-// a face's drawing: its outline and the shadows of each light on it.
-struct FaceDrawing {
-  double depth;  // drawn from largest to smallest
-  std::vector<Shape> shapes;
-};
-
-std::optional<std::vector<Flat>> project_ring(const json& ring, const Projection& project) {
-  std::vector<Flat> out;
-  for (const auto& point : ring) {
-    const auto p = project(point.get<Vec3d>());
-    if (!p) return std::nullopt;
-    out.push_back(*p);
-  }
-  return out;
-}
-
-// appends the filled polygons of a region in the given style.
-void add_region(FaceDrawing& drawing, const json& region, const std::string& style,
-                const Projection& project) {
-  for (const auto& polygon : region.at("polygons")) {
-    Shape shape{{}, style};
-    const auto outer = project_ring(polygon.at("outer"), project);
-    if (!outer) continue;
-    shape.rings.push_back(*outer);
-    for (const auto& hole : polygon.at("holes"))
-      if (auto ring = project_ring(hole, project)) shape.rings.push_back(*ring);
-    drawing.shapes.push_back(std::move(shape));
-  }
-}
 
 std::optional<FaceDrawing> draw_face(const json& face, const std::vector<std::string>& lights,
                                      const Projection& project, double depth, bool loops) {
@@ -93,38 +54,6 @@ std::optional<FaceDrawing> draw_face(const json& face, const std::vector<std::st
   return drawing;
 }
 
-// fits the drawings into a box of the given size (y up in the drawings, down in SVG).
-void emit(std::ostream& out, std::vector<FaceDrawing> drawings, double x0, double y0, double width,
-          double height, bool flip_y) {
-  double min_x = INFINITY, min_y = INFINITY, max_x = -INFINITY, max_y = -INFINITY;
-  for (const auto& drawing : drawings)
-    for (const auto& shape : drawing.shapes)
-      for (const auto& ring : shape.rings)
-        for (const Flat& p : ring) {
-          min_x = std::min(min_x, p[0]), max_x = std::max(max_x, p[0]);
-          min_y = std::min(min_y, p[1]), max_y = std::max(max_y, p[1]);
-        }
-  if (!(max_x >= min_x)) return;
-  const double scale =
-      std::min(width / std::max(max_x - min_x, 1e-9), height / std::max(max_y - min_y, 1e-9));
-  std::stable_sort(drawings.begin(), drawings.end(),
-                   [](const FaceDrawing& a, const FaceDrawing& b) { return a.depth > b.depth; });
-  for (const auto& drawing : drawings)
-    for (const auto& shape : drawing.shapes) {
-      out << "<path " << shape.style << " d=\"";
-      for (const auto& ring : shape.rings) {
-        for (std::size_t k = 0; k < ring.size(); ++k) {
-          const double x = x0 + (ring[k][0] - min_x) * scale;
-          const double y =
-              flip_y ? y0 + (max_y - ring[k][1]) * scale : y0 + (ring[k][1] - min_y) * scale;
-          out << (k ? " L" : "M") << x << " " << y;
-        }
-        out << " Z ";
-      }
-      out << "\"/>\n";
-    }
-}
-
 }  // namespace
 
 std::optional<SvgView> parse_svg_view(const std::string& name) {
@@ -159,13 +88,8 @@ void ShadowSvgWriter::begin(const json& header, std::size_t) {
   d.body << std::setprecision(6);
   if (view_ == SvgView::top) {
     // Plan view: faces turned up, lowest first.
-    d.project = [](const Vec3d& p) -> std::optional<Flat> { return Flat{p[0], p[1]}; };
-    d.depth_of = [](const json& face) -> std::optional<double> {
-      if (face.at("plane")[2].get<double>() <= 0) return std::nullopt;
-      double top = -INFINITY;
-      for (const auto& p : *boundary_rings(face).front()) top = std::max(top, p[2].get<double>());
-      return -top;
-    };
+    d.project = plan_projection();
+    d.depth_of = plan_depth;
   } else if (view_ == SvgView::camera) {
     const CameraFrame frame(*camera_);
     const Vec3d eye = camera_->eye;
@@ -211,11 +135,7 @@ void ShadowSvgWriter::face(const json& face) {
   if (!reached) return;
   const int columns = 4;
   const double panel = d.sheet_width / columns;
-  const Vec3d origin = face.at("frame").at("origin").get<Vec3d>();
-  const Vec3d u = face.at("frame").at("u").get<Vec3d>(), v = face.at("frame").at("v").get<Vec3d>();
-  const Projection project = [&](const Vec3d& p) -> std::optional<Flat> {
-    return Flat{dot(p - origin, u), dot(p - origin, v)};
-  };
+  const Projection project = frame_projection(face);
   const double x0 = (d.panels % columns) * panel,
                y0 = d.legend_height + (d.panels / columns) * panel;
   d.body << "<g>\n<text x=\"" << x0 + 10 << "\" y=\"" << y0 + 16

@@ -12,6 +12,7 @@
 #include "exact_compare.h"
 #include "half_plane.h"
 #include "penumbra/base/parallel.h"
+#include "polygon_set_region.h"
 
 namespace penumbra::detail {
 namespace {
@@ -27,23 +28,6 @@ PolygonSet join(const std::vector<Ring2>& rings) {
   if (polygons.size() == 1) set.insert(polygons.front());
   if (polygons.size() > 1) set.join(polygons.begin(), polygons.end());
   return set;
-}
-
-Ring2 to_ring(const Polygon& polygon) {
-  return canonical_ring(Ring2(polygon.vertices_begin(), polygon.vertices_end()));
-}
-
-Region2 region_of(const PolygonSet& set) {
-  std::vector<PolygonWithHoles> parts;
-  set.polygons_with_holes(std::back_inserter(parts));
-  std::vector<Polygon2> polygons;
-  for (const PolygonWithHoles& part : parts) {
-    Polygon2 polygon{to_ring(part.outer_boundary()), {}};
-    for (auto hole = part.holes_begin(); hole != part.holes_end(); ++hole)
-      polygon.holes.push_back(to_ring(*hole));
-    polygons.push_back(std::move(polygon));
-  }
-  return canonical_region(std::move(polygons));
 }
 
 // returns the pairs of rings whose boxes (rounded outward) meet.
@@ -101,12 +85,10 @@ ShadowSets shadow_sets(const std::vector<Ring2>& shadows, const std::vector<Ring
 
 Region2 unite_regions(const std::vector<Region2>& regions) {
   std::vector<PolygonWithHoles> parts;
-  for (const Region2& region : regions)
-    for (const Polygon2& polygon : region.polygons) {
-      PolygonWithHoles part(Polygon(polygon.outer.begin(), polygon.outer.end()));
-      for (const Ring2& hole : polygon.holes) part.add_hole(Polygon(hole.begin(), hole.end()));
-      parts.push_back(std::move(part));
-    }
+  for (const Region2& region : regions) {
+    std::vector<PolygonWithHoles> more = polygons_with_holes<PolygonWithHoles>(region);
+    std::move(more.begin(), more.end(), std::back_inserter(parts));
+  }
   if (parts.empty()) return {};
   PolygonSet set;
   if (parts.size() == 1)

@@ -3,10 +3,14 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "support/fixtures.h"
 
@@ -26,7 +30,7 @@ BOOST_AUTO_TEST_CASE(help_lists_every_verb_of_the_design) {
   const auto result = run_penumbra("--help");
   BOOST_TEST(result.status == 0);
   for (const char* verb : {"info", "shadows", "check", "illuminance", "render", "raytrace", "lid",
-                           "radiosity", "basis", "relight", "serve", "sun"}) {
+                           "radiosity", "basis", "relight", "serve", "sun", "sun-hours"}) {
     BOOST_TEST(contains(result.out, std::string("  ") + verb), verb);
     BOOST_TEST(run_penumbra(std::string(verb) + " --help").status == 0, verb);
   }
@@ -108,6 +112,111 @@ BOOST_AUTO_TEST_CASE(sun_lists_the_day_against_the_spa_sunrise_and_sunset) {
   }
   // A scene without a sun by place and time is an input error.
   BOOST_TEST(run_penumbra("sun fixtures/scenes/office.json").status == 2);
+}
+
+BOOST_AUTO_TEST_CASE(sun_hours_writes_its_documents_and_answers_the_threshold) {
+  using penumbra::test::csv_columns;
+  using penumbra::test::read_text;
+  const auto dir = penumbra::test::scratch_dir("cli-sun-hours");
+  const std::string files = " -o '" + (dir / "h.json").string() + "' --report '" +
+                            (dir / "h.csv").string() + "' --svg '" + (dir / "h.svg").string() +
+                            "' --png '" + (dir / "h.png").string() + "' --png-width 300";
+  const auto result = run_penumbra("sun-hours fixtures/scenes/sun-london.json --step 1h" + files);
+  BOOST_TEST_REQUIRE(result.status == 0, result.err);
+  const auto document = nlohmann::json::parse(read_text(dir / "h.json"));
+  BOOST_TEST(document.at("penumbra_sun_hours").get<int>() == 1);
+  // 21 March in London: the sun is up from about 06:05 to 18:15 UTC, 12 hourly steps.
+  BOOST_TEST(document.at("steps").at("sun_up").get<int>() == 12);
+  BOOST_TEST(document.at("steps").at("count").get<int>() == 24);
+  const auto csv = csv_columns(read_text(dir / "h.csv"));
+  BOOST_TEST_REQUIRE(csv.at("face").size() == document.at("faces").size());
+  for (std::size_t k = 0; k < csv.at("face").size(); ++k) {
+    // Every face gets at least 0 h over all of it; the areas with more sun shrink.
+    const double area = std::stod(csv.at("face_area")[k]);
+    BOOST_TEST(std::stod(csv.at("area_ge_0h")[k]) == area, boost::test_tools::tolerance(1e-12));
+    double parts = 0;
+    for (const auto& part : document.at("faces")[k].at("hours"))
+      parts += part.at("area").get<double>();
+    BOOST_TEST(parts == area, boost::test_tools::tolerance(1e-9));
+    for (int h = 1; csv.count("area_ge_" + std::to_string(h) + "h"); ++h)
+      BOOST_TEST(std::stod(csv.at("area_ge_" + std::to_string(h) + "h")[k]) <=
+                 std::stod(csv.at("area_ge_" + std::to_string(h - 1) + "h")[k]));
+  }
+  BOOST_TEST(contains(read_text(dir / "h.svg"), "hours of direct sun"));
+  BOOST_TEST(penumbra::test::png_size(read_text(dir / "h.png")).first == 300u);
+
+  // The threshold over the ground's faces is the CSV's column summed over them.
+  const auto threshold = run_penumbra(
+      "sun-hours fixtures/scenes/sun-london.json --step 1h --threshold 2h --region ground");
+  BOOST_TEST_REQUIRE(threshold.status == 0, threshold.err);
+  double ground = 0;
+  for (std::size_t k = 0; k < csv.at("object").size(); ++k)
+    if (csv.at("object")[k] == "ground") ground += std::stod(csv.at("area_ge_2h")[k]);
+  std::ostringstream expected;
+  expected << "region ground: " << std::setprecision(6) << ground << " m2";
+  BOOST_TEST(contains(threshold.out, expected.str()), threshold.out);
+
+  // Bad input: exit 2, nothing written.
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  for (const char* bad :
+       {"--date 2026-13-01", "--step 0min", "--threshold 2h", "--region ground",
+        "--date 2026-03-22 --to 2026-03-21", "--threshold 2h --region nothing", "--light moon"}) {
+    const auto failed =
+        run_penumbra(std::string("sun-hours fixtures/scenes/sun-london.json ") + bad + files);
+    BOOST_TEST(failed.status == 2, bad);
+    BOOST_TEST(std::filesystem::is_empty(dir), bad);
+  }
+  BOOST_TEST(run_penumbra("sun-hours fixtures/scenes/office.json").status == 2);
+}
+
+BOOST_AUTO_TEST_CASE(shadow_diagram_holds_each_time_as_the_scene_at_that_time) {
+  using penumbra::test::read_text;
+  const auto dir = penumbra::test::scratch_dir("cli-diagram");
+  const std::string out = (dir / "d.json").string(), svg = (dir / "d.svg").string();
+  // 04:00 is before sunrise in London in March: skipped and said so.
+  const auto result = run_penumbra(
+      "shadows fixtures/scenes/sun-london.json --times "
+      "2026-03-21T04:00,2026-03-21T12:00,4h -o '" +
+      out + "' --svg '" + svg + "'");
+  BOOST_TEST_REQUIRE(result.status == 0, result.err);
+  BOOST_TEST(contains(result.err, "below the horizon at 2026-03-21T04:00:00+00:00"));
+  const auto diagram = nlohmann::json::parse(read_text(out));
+  BOOST_TEST(diagram.at("skipped").size() == 1u);
+  BOOST_TEST_REQUIRE(diagram.at("times").size() == 2u);
+  // Each time's shadows are those of the scene with its sun set to that time (the scene
+  // loader's one-shot solar position against the study's interpolating solver: areas agree
+  // to 1e-6 relative).
+  std::string scene = read_text(penumbra::test::fixture("scenes/sun-london.json"));
+  const std::string noon = "2026-03-21T12:00:00+00:00";
+  for (const auto& [k, time] :
+       {std::pair{0, "2026-03-21T08:00:00+00:00"}, std::pair{1, noon.c_str()}}) {
+    const auto& entry = diagram.at("times")[k];
+    BOOST_TEST(entry.at("time").get<std::string>() == time);
+    std::string moved = scene;
+    moved.replace(moved.find(noon), noon.size(), time);
+    const auto path = dir / ("scene" + std::to_string(k) + ".json");
+    std::ofstream(path) << moved;
+    const auto single = run_penumbra("shadows '" + path.string() + "'");
+    BOOST_TEST_REQUIRE(single.status == 0, single.err);
+    const auto expected = nlohmann::json::parse(single.out).at("faces");
+    const auto& faces = entry.at("shadows").at("faces");
+    BOOST_TEST_REQUIRE(faces.size() == expected.size());
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const double a = faces[f].at("lights")[0].at("shadow").at("area").get<double>();
+      const double b = expected[f].at("lights")[0].at("shadow").at("area").get<double>();
+      BOOST_TEST(std::abs(a - b) <= 1e-6 * std::max(1.0, b), time << " face " << f);
+    }
+  }
+  const std::string drawing = read_text(svg);
+  BOOST_TEST(contains(drawing, "<g id=\"time-2026-03-21T08-00-00-00-00\">"));
+  BOOST_TEST(contains(drawing, "<g id=\"time-2026-03-21T12-00-00-00-00\">"));
+  // One time only: --dxf, --report and --loops are refused with --times; bad times too.
+  for (const char* bad : {"--times 2026-03-21T12:00 --dxf x.dxf", "--times 2026-03-21T25:00",
+                          "--times 2026-03-21T12:00,2026-03-21T08:00,1h"})
+    BOOST_TEST(
+        run_penumbra(std::string("shadows fixtures/scenes/sun-london.json ") + bad).status == 2,
+        bad);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

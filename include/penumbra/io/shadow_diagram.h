@@ -1,0 +1,33 @@
+#pragma once
+// The shadow diagram of a sun study (issue 19, docs/sun-hours.md, "Shadow diagrams"): the
+// shadows of the scene's sun at several times in one document, and the classic plan-view
+// drawing of a planning application, every time's shadows over the faces turned up, a
+// layer and a colour per time.
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace penumbra::io {
+
+// One time of the diagram: when (ISO 8601), where the sun stood, and the shadow loops
+// document of the scene lit by the sun alone at that time (io/shadow_json.h).
+struct DiagramTime {
+  std::string time;
+  double azimuth_deg = 0, elevation_deg = 0;
+  nlohmann::json shadows;
+};
+
+// returns {"penumbra_shadow_diagram": 1, "sun": sun, "times": [{"azimuth_deg",
+// "elevation_deg", "shadows", "time"}], "skipped": [times with the sun below the horizon]}.
+nlohmann::json shadow_diagram_json(const std::string& sun, const std::vector<DiagramTime>& times,
+                                   const std::vector<std::string>& skipped);
+
+// writes the plan view: the faces turned up (lowest first) outlined, then for each time a
+// layer <g id="time-..."> with its shadows on those faces in the time's colour, and a legend
+// of the times (and of the skipped ones).
+void write_shadow_diagram_svg(std::ostream& out, const nlohmann::json& diagram);
+
+}  // namespace penumbra::io

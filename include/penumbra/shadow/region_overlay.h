@@ -1,0 +1,30 @@
+#pragma once
+// The overlay of many regions of one face: the face cut into the parts that exactly k of
+// the regions cover (an arrangement of all their edges, CGAL Arrangement_2, with a count
+// on every face). Sun-hours (issue 19, docs/sun-hours.md) overlays the lit sets of the
+// time steps this way, so that every part of a face carries its sunlit duration.
+
+#include <cstddef>
+#include <vector>
+
+#include "penumbra/shadow/region.h"
+
+namespace penumbra {
+
+// The points of a window that exactly count of the overlaid regions cover.
+struct Coverage {
+  std::size_t count = 0;
+  Region2 region;  // canonical, with area
+};
+
+// returns the window cut by coverage: for each count that some part of the window has, the
+// part covered by exactly that many of regions, plus base (for regions the caller knows to
+// cover the whole window and leaves out); increasing in count, together tiling the window.
+// window: outer ring counter-clockwise, holes clockwise, all canonical. regions: canonical
+// regions of the window's frame lying inside the window (what lies outside counts nowhere).
+// Points on the regions' boundaries belong to the parts on either side: the parts are
+// closed sets with disjoint interiors, as every region of DESIGN.md's conventions.
+std::vector<Coverage> coverage(const Polygon2& window, const std::vector<const Region2*>& regions,
+                               std::size_t base = 0);
+
+}  // namespace penumbra

@@ -1,0 +1,80 @@
+#pragma once
+// Sun-hours (issue 19, docs/sun-hours.md): how long each part of every face is in direct
+// sun over a range of time steps. Each step where the sun's centre is above the horizon
+// lights the scene from the sun's direction then; the exact lit set of every face at every
+// such step (shadow_map.h) is overlaid with the others (region_overlay.h), so every part
+// of a face carries the number of steps that light it, and the duration is that number
+// times the step length (DESIGN.md: "each sun-up step counting one step length").
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "penumbra/base/vec3d.h"
+#include "penumbra/scene/scene.h"
+#include "penumbra/shadow/region_overlay.h"
+#include "penumbra/shadow/shadow_map.h"
+#include "penumbra/sun/civil_time.h"
+#include "penumbra/sun/solar_position.h"
+
+namespace penumbra::studies {
+
+// One time step of a study: when, where the sun stands, and where its light goes.
+struct SunStep {
+  sun::UtcInstant time;
+  sun::SolarPosition position;
+  Vec3d direction;  // the direction sunlight travels in the model frame (as "directional")
+  // the step counts when the sun's centre is above the horizon (refraction included when
+  // the scene's sun gives the air), the rule by which a scene leaves a sun out of its lights.
+  bool up() const { return position.elevation_deg > 0; }
+};
+
+// returns the steps of sun at the instants, in their order (sun::SolarPositionSolver,
+// sun::light_direction with the scene's north_deg).
+std::vector<SunStep> sun_steps(const SunPlacement& sun, double north_deg,
+                               const std::vector<sun::UtcInstant>& instants);
+
+struct SunHoursOptions {
+  // only these receiving faces, as ShadowOptions::receivers; every face when empty.
+  std::optional<std::vector<Receiver>> receivers;
+  bool parallel = true;  // TBB across faces (shadows of a step, and the overlays)
+  // progress (each may be empty): step_done after each sun-up step's shadows;
+  // overlays_begin before the overlays with the number of faces, then face_done after each
+  // face's overlay, from any thread.
+  std::function<void()> step_done;
+  std::function<void(std::size_t)> overlays_begin;
+  std::function<void()> face_done;
+};
+
+// The sunlit parts of one receiving face.
+struct FaceSunHours {
+  // the face cut by the number of sun-up steps that light each part (Coverage::count),
+  // increasing, together tiling the face; one part when the face is lit alike throughout.
+  std::vector<Coverage> parts;
+};
+
+struct SunHoursResult {
+  std::vector<SunStep> steps;  // every instant asked for, the sun up or not
+  sun::Duration step{0};       // what each sun-up step counts
+  // the receiving faces (receivers, mesh_faces, warnings; no lights), as receiving_face
+  // names and draws them.
+  ShadowResult faces;
+  std::vector<FaceSunHours> hours;  // parallel to faces.receivers
+  double shadow_seconds = 0;        // wall time of the steps' shadows
+  double overlay_seconds = 0;       // wall time of the overlays
+
+  std::size_t steps_up() const;
+  // returns the duration that count sun-up steps make, in minutes.
+  double minutes(std::size_t count) const;
+};
+
+// computes the sun-hours of every face of scene (or of options.receivers) under sun (one
+// of scene.suns) at the instants, each sun-up step counting step. The scene's other
+// lights play no part. Throws InputError as compute_shadows does.
+SunHoursResult sun_hours(const Scene& scene, const SunPlacement& sun,
+                         const std::vector<sun::UtcInstant>& instants, sun::Duration step,
+                         const SunHoursOptions& options = {});
+
+}  // namespace penumbra::studies

@@ -1,0 +1,256 @@
+// penumbra sun-hours SCENE: how long every part of every face is in direct sun through a
+// day or a range of days (docs/sun-hours.md): the exact parts by duration as JSON, the
+// area with at least H hours per face as CSV, heat maps, and the area of a region that
+// reaches a threshold.
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "penumbra/base/atomic_file.h"
+#include "penumbra/base/input_error.h"
+#include "penumbra/base/progress.h"
+#include "penumbra/io/shadow_json.h"
+#include "penumbra/io/sun_hours_document.h"
+#include "penumbra/scene/object_selection.h"
+#include "penumbra/studies/sun_hours.h"
+#include "verbs.h"
+
+namespace penumbra::cli {
+namespace {
+
+struct SunHoursArguments {
+  std::string scene;
+  std::string light;
+  std::string date, to;
+  std::string step = "10min";
+  std::string utc_offset;
+  std::string output, report, svg, png;
+  std::string view = "top";
+  int png_width = 1200;
+  bool exact = false;
+  std::string receivers;
+  std::string threshold, region;
+  std::string site;
+  bool stats = false;
+};
+
+// the most steps one command computes (a year at 10-minute steps is 52,560).
+constexpr long long kMaxSteps = 1'000'000;
+
+// returns the UTC offset in minutes of text such as +01:00, -0530, Z.
+int parse_offset(const std::string& text) {
+  return sun::parse_date_time("2000-01-01T00:00" + text, std::nullopt, {"", "--utc-offset"})
+      .offset_minutes;
+}
+
+// returns the sun of the study: the scene's, or with --site one at that place, with the
+// illuminance of the scene's sun or directional light of that name (100,000 lx otherwise).
+SunPlacement study_sun(const Scene& scene, const SunHoursArguments& arguments) {
+  if (arguments.site.empty()) return choose_sun(scene, arguments.scene, arguments.light);
+  SunPlacement sun;
+  sun.name = arguments.light.empty() ? "sun" : arguments.light;
+  sun.json_path = "--site";
+  sun.illuminance = 100000;
+  for (const SunPlacement& candidate : scene.suns)
+    if (candidate.name == sun.name) sun = candidate;
+  if (const Light* light = scene.find_light(sun.name))
+    if (const auto* directional = std::get_if<DirectionalLight>(&light->source))
+      sun.illuminance = directional->illuminance;
+  std::vector<double> values;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = arguments.site.find(',', start);
+    const std::string field = arguments.site.substr(start, comma - start);
+    try {
+      std::size_t used = 0;
+      values.push_back(std::stod(field, &used));
+      if (used != field.size()) throw std::invalid_argument(field);
+    } catch (const std::exception&) {
+      throw InputError("", "--site",
+                       "expected LATITUDE,LONGITUDE[,ELEVATION], found '" + arguments.site + "'");
+    }
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (values.size() < 2 || values.size() > 3 || !(std::abs(values[0]) <= 90) ||
+      !(std::abs(values[1]) <= 180) || (values.size() == 3 && !std::isfinite(values[2])))
+    throw InputError("", "--site",
+                     "expected LATITUDE (-90..90),LONGITUDE (-180..180)[,ELEVATION m], found '" +
+                         arguments.site + "'");
+  sun.site = {values[0], values[1], values.size() == 3 ? values[2] : 0.0};
+  return sun;
+}
+
+// prints the area of the region's faces that gets at least threshold of sun.
+void report_threshold(const Scene& scene, const studies::SunHoursResult& result,
+                      const std::vector<std::size_t>& objects, sun::Duration threshold,
+                      const std::string& region) {
+  std::vector<bool> chosen(scene.objects.size(), false);
+  for (std::size_t object : objects) chosen[object] = true;
+  double total = 0, reached = 0;
+  for (std::size_t r = 0; r < result.faces.receivers.size(); ++r) {
+    if (!chosen[result.faces.receivers[r].object]) continue;
+    const ReceivingFace face = receiving_face(scene, result.faces, r);
+    Exact sum = 0;
+    for (const Coverage& part : result.hours[r].parts)
+      if (result.step * static_cast<long long>(part.count) >= threshold) sum += part.region.area;
+    total += io::world_area(face.area, face.frame);
+    reached += io::world_area(sum, face.frame);
+  }
+  const double minutes = std::chrono::duration<double, std::ratio<60>>(threshold).count();
+  char line[256];
+  std::snprintf(line, sizeof line, "%.6g m2 of %.6g m2 (%.2f %%)", reached, total,
+                total > 0 ? 100 * reached / total : 0.0);
+  std::cout << "region " << region << ": " << line << " gets at least " << minutes / 60
+            << " h of direct sun\n";
+}
+
+int run_sun_hours(const SunHoursArguments& arguments) {
+  using Clock = std::chrono::steady_clock;
+  const auto started = Clock::now();
+  const Scene& scene = load_scene_until_exit(arguments.scene);
+  for (const std::string& warning : scene.warnings)
+    std::cerr << "penumbra: warning: " << warning << "\n";
+  const SunPlacement sun = study_sun(scene, arguments);
+  if (!arguments.threshold.empty() && arguments.region.empty())
+    throw InputError("", "--threshold", "needs --region NAME[,NAME...]");
+  if (arguments.threshold.empty() && !arguments.region.empty())
+    throw InputError("", "--region", "needs --threshold, e.g. 2h");
+
+  // Dates are days on the clock of the scene's sun time unless --utc-offset says otherwise.
+  const int offset =
+      arguments.utc_offset.empty() ? sun.time.offset_minutes : parse_offset(arguments.utc_offset);
+  if (arguments.date.empty() && sun.json_path == "--site")
+    throw InputError("", "--date", "is needed with --site (the scene gives no date)");
+  const sun::CivilDate first =
+      arguments.date.empty() ? sun::civil_date_time(sun.time.utc, sun.time.offset_minutes).date
+                             : sun::parse_date(arguments.date, {"", "--date"});
+  const sun::CivilDate last =
+      arguments.to.empty() ? first : sun::parse_date(arguments.to, {"", "--to"});
+  const sun::UtcInstant from = sun::local_midnight(first, offset);
+  const sun::UtcInstant end = sun::local_midnight(last, offset) + std::chrono::hours(24);
+  if (end <= from) throw InputError("", "--to", "is before --date");
+  const sun::Duration step = sun::parse_step(arguments.step, {"", "--step"});
+  if ((end - from) / step >= kMaxSteps)
+    throw InputError("", "--step", "more than 10^6 steps: use a longer step or fewer days");
+  // The steps of the days: from the first midnight up to, not including, the last one.
+  const std::vector<sun::UtcInstant> instants =
+      sun::step_instants({from, offset}, end - sun::Duration(1), step);
+  std::optional<sun::Duration> threshold;
+  if (!arguments.threshold.empty())
+    threshold = sun::parse_step(arguments.threshold, {"", "--threshold"});
+  std::vector<std::size_t> region_objects;
+  if (threshold) region_objects = select_objects(scene, arguments.region, "--region");
+
+  studies::SunHoursOptions options;
+  if (!arguments.receivers.empty())
+    options.receivers = faces_of_objects(scene, select_objects(scene, arguments.receivers));
+  std::size_t up = 0;
+  for (const studies::SunStep& s : studies::sun_steps(sun, scene.north_deg, instants)) up += s.up();
+  std::unique_ptr<Progress> progress =
+      std::make_unique<Progress>("sun-hours: shadows of the steps", up);
+  options.step_done = [&] { progress->advance(); };
+  options.overlays_begin = [&](std::size_t faces) {
+    progress = std::make_unique<Progress>("sun-hours: overlays", faces);
+  };
+  options.face_done = [&] { progress->advance(); };
+  const studies::SunHoursResult& result =
+      keep_until_exit(studies::sun_hours(scene, sun, instants, step, options));
+  progress.reset();
+  for (const std::string& warning : result.faces.warnings)
+    std::cerr << "penumbra: warning: " << warning << "\n";
+  if (up == 0)
+    std::cerr << "penumbra: warning: the sun '" << sun.name
+              << "' is below the horizon at every step: every face gets 0 h\n";
+  const auto computed = Clock::now();
+
+  io::SunHoursHeader header;
+  header.sun = sun.name;
+  header.offset_minutes = offset;
+  header.from = sun::format_date_time(from, offset);
+  header.to = sun::format_date_time(end, offset);
+  header.north_deg = scene.north_deg;
+  header.site = sun.site;
+  const bool document_wanted = !arguments.output.empty() || !arguments.svg.empty() ||
+                               !arguments.png.empty() || (arguments.report.empty() && !threshold);
+  nlohmann::json document;
+  if (document_wanted) document = io::sun_hours_json(scene, result, header, arguments.exact);
+  // Every file is written whole or not at all; the first to fail stops the rest.
+  if (!arguments.output.empty() && arguments.output != "-")
+    write_atomically(arguments.output,
+                     [&](std::ostream& out) { out << io::format_json(document); });
+  else if (document_wanted && arguments.report.empty() && !threshold && arguments.svg.empty() &&
+           arguments.png.empty())
+    std::cout << io::format_json(document);
+  if (!arguments.report.empty())
+    write_atomically(arguments.report,
+                     [&](std::ostream& out) { io::write_sun_hours_csv(out, scene, result); });
+  if (!arguments.svg.empty()) {
+    const auto view = io::parse_svg_view(arguments.view);
+    write_atomically(arguments.svg,
+                     [&](std::ostream& out) { io::write_sun_hours_svg(out, document, *view); });
+  }
+  if (!arguments.png.empty()) io::write_sun_hours_png(arguments.png, document, arguments.png_width);
+  if (threshold) report_threshold(scene, result, region_objects, *threshold, arguments.region);
+  if (arguments.stats)
+    std::cerr << "steps " << result.steps.size() << " (" << up << " with the sun up), faces "
+              << result.faces.receivers.size() << "; time: shadows " << result.shadow_seconds
+              << " s, overlay " << result.overlay_seconds << " s, total (load to files) "
+              << std::chrono::duration<double>(Clock::now() - started).count() << " s (outputs "
+              << std::chrono::duration<double>(Clock::now() - computed).count() << " s)\n";
+  return 0;
+}
+
+}  // namespace
+
+void register_sun_hours(CLI::App& app) {
+  CLI::App* verb = app.add_subcommand(
+      "sun-hours",
+      "exact sunlit duration on every face through a day or days (JSON, CSV, SVG, PNG)");
+  auto arguments = std::make_shared<SunHoursArguments>();
+  verb->add_option("SCENE", arguments->scene, "scene file (JSON) with a \"sun\" light")->required();
+  verb->add_option("--light", arguments->light, "the sun to follow (when the scene has several)");
+  verb->add_option("--site", arguments->site,
+                   "LATITUDE,LONGITUDE[,ELEVATION]: the place, for a scene whose sun is not "
+                   "given by place and time (with --date; days at --utc-offset, default UTC)");
+  verb->add_option("--date", arguments->date,
+                   "the (first) day, YYYY-MM-DD (default: the date of the scene's sun time)");
+  verb->add_option("--to", arguments->to, "the last day, YYYY-MM-DD (default: --date)");
+  verb->add_option("--step", arguments->step,
+                   "step length, e.g. 10min, 1h; steps fall on whole steps from local midnight "
+                   "and each with the sun up counts one step (default 10min)");
+  verb->add_option("--utc-offset", arguments->utc_offset,
+                   "the clock of the days, e.g. +01:00 (default: the offset of the scene's sun "
+                   "time)");
+  verb->add_option("-o,--output", arguments->output,
+                   "JSON of every face cut into parts by duration (default: standard output "
+                   "when no other output is asked for)");
+  verb->add_option("--report", arguments->report,
+                   "CSV: object,face,face_area,area_ge_0h,area_ge_1h,... per face");
+  verb->add_option("--svg", arguments->svg, "heat map SVG");
+  verb->add_option("--view", arguments->view, "SVG view: top (plan) or faces (one panel each)")
+      ->check(CLI::IsMember({"top", "faces"}));
+  verb->add_option("--png", arguments->png, "heat map PNG in plan view");
+  verb->add_option("--png-width", arguments->png_width, "PNG width in pixels (default 1200)")
+      ->check(CLI::Range(16, 16384));
+  verb->add_flag("--exact", arguments->exact,
+                 "JSON: add exact rational coordinates (\"p/q\") under \"exact\" keys");
+  verb->add_option("--receivers", arguments->receivers,
+                   "only the faces of these objects: NAME[,NAME...], shell patterns; the "
+                   "others still cast shadows");
+  verb->add_option("--threshold", arguments->threshold,
+                   "with --region: print the area of the region with at least this much sun "
+                   "(e.g. 2h, 90min)");
+  verb->add_option("--region", arguments->region,
+                   "the objects whose faces make the region: NAME[,NAME...], shell patterns");
+  verb->add_flag("--stats", arguments->stats, "print steps, faces and time per stage on stderr");
+  verb->callback([arguments] { exit_status() = run_sun_hours(*arguments); });
+}
+
+}  // namespace penumbra::cli

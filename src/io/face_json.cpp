@@ -1,0 +1,203 @@
+#include "face_json.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "penumbra/io/shadow_json.h"
+
+namespace penumbra::io {
+
+double rounded(const Rational& x) {
+  return CGAL::to_double(x) + 0.0;
+}
+double rounded(const Exact& x) {
+  // An interval that is a point is the exact value (most areas and frame lengths of CAD
+  // models are doubles): no exact evaluation needed.
+  const auto& approx = x.approx();
+  if (approx.is_point()) return approx.inf() + 0.0;
+  return rounded(x.exact());
+}
+
+void emit_point(JsonEmitter& out, const RationalPoint3& p) {
+  out.begin_array();
+  for (int i = 0; i < 3; ++i) out.number(rounded(p[i]));
+  out.end_array();
+}
+void emit_point(JsonEmitter& out, const Point3& p) {
+  // A point given as doubles is its own rounding (most vertices of a scene are).
+  const auto& approx = p.approx();
+  if (!approx.x().is_point() || !approx.y().is_point() || !approx.z().is_point())
+    return emit_point(out, CGAL::exact(p));
+  out.begin_array();
+  for (int i = 0; i < 3; ++i) out.number(approx[i].inf() + 0.0);
+  out.end_array();
+}
+void emit_exact_point(JsonEmitter& out, const RationalPoint3& p) {
+  out.begin_array();
+  for (int i = 0; i < 3; ++i) out.string(rational_string(p[i]));
+  out.end_array();
+}
+
+void emit_unit(JsonEmitter& out, const Vector3& v) {
+  const RationalVector3& exact = CGAL::exact(v);
+  const double x = rounded(exact.x()), y = rounded(exact.y()), z = rounded(exact.z());
+  const double length = std::sqrt(x * x + y * y + z * z);
+  out.begin_array();
+  for (double c : {x, y, z}) out.number(c / length + 0.0);
+  out.end_array();
+}
+
+// the ring's points in the world: a face vertex as it is, any other point computed in
+// rationals from its frame coordinates (no lazy construction made for output).
+void emit_ring(JsonEmitter& out, const Ring2& ring, const FaceOutput& output, bool exact) {
+  const ReceivingFace& face = output.face;
+  out.begin_array();
+  for (const Point2& p : ring) {
+    const auto vertex = std::find_if(output.ring.begin(), output.ring.end(), [&](const Point2& q) {
+      return CGAL::identical(p, q) || p == q;
+    });
+    if (vertex != output.ring.end()) {
+      const Point3& world = face.outer[static_cast<std::size_t>(vertex - output.ring.begin())];
+      if (exact)
+        emit_exact_point(out, CGAL::exact(world));
+      else
+        emit_point(out, world);
+      continue;
+    }
+    if (!exact) {
+      if (const auto known = output.world.find(p.id()); known != output.world.end()) {
+        out.begin_array();
+        for (double x : output.rounded[known->second]) out.number(x);
+        out.end_array();
+        continue;
+      }
+    }
+    const RationalPoint3 world = face.frame.to_world(CGAL::exact(p));
+    if (exact)
+      emit_exact_point(out, world);
+    else
+      emit_point(out, world);
+  }
+  out.end_array();
+}
+
+namespace {
+
+// a polygon's rings: {"holes": [...], "outer": [...]}.
+void emit_rings(JsonEmitter& out, const Polygon2& polygon, const FaceOutput& face, bool exact) {
+  out.key("holes");
+  out.begin_array();
+  for (const Ring2& hole : polygon.holes) emit_ring(out, hole, face, exact);
+  out.end_array();
+  out.key("outer");
+  emit_ring(out, polygon.outer, face, exact);
+}
+
+}  // namespace
+
+void emit_polygons(JsonEmitter& out, const Region2& region, const FaceOutput& face, bool exact) {
+  out.key("polygons");
+  out.begin_array();
+  for (const Polygon2& polygon : region.polygons) {
+    out.begin_object();
+    if (exact) {
+      out.key("exact");
+      out.begin_object();
+      emit_rings(out, polygon, face, true);
+      out.end_object();
+    }
+    emit_rings(out, polygon, face, false);
+    out.end_object();
+  }
+  out.end_array();
+}
+
+void emit_region(JsonEmitter& out, const Region2& region, const FaceOutput& face, bool exact) {
+  out.begin_object();
+  out.key("area");
+  out.number(world_area(region, face.face.frame));
+  emit_polygons(out, region, face, exact);
+  out.end_object();
+}
+
+void emit_plane(JsonEmitter& out, const Plane3& plane, bool exact) {
+  out.begin_array();
+  if (exact) {
+    for (const Rational& k : canonical_plane(plane)) out.string(rational_string(k));
+  } else {
+    const RationalPlane3& rational = CGAL::exact(plane);
+    const double a = rounded(rational.a()), b = rounded(rational.b()), c = rounded(rational.c()),
+                 d = rounded(rational.d());
+    const double length = std::sqrt(a * a + b * b + c * c);
+    for (double k : {a, b, c, d}) out.number(k / length + 0.0);
+  }
+  out.end_array();
+}
+
+namespace {
+
+// a world ring of exact points.
+void emit_world_ring(JsonEmitter& out, const std::vector<Point3>& ring, bool exact) {
+  out.begin_array();
+  for (const Point3& p : ring)
+    if (exact)
+      emit_exact_point(out, CGAL::exact(p));
+    else
+      emit_point(out, p);
+  out.end_array();
+}
+
+}  // namespace
+
+void emit_boundary(JsonEmitter& out, const ReceivingFace& face, bool exact) {
+  if (!face.holes) {
+    emit_world_ring(out, face.outer, exact);
+    return;
+  }
+  out.begin_object();
+  out.key("holes");
+  out.begin_array();
+  for (const auto& hole : *face.holes) emit_world_ring(out, hole, exact);
+  out.end_array();
+  out.key("outer");
+  emit_world_ring(out, face.outer, exact);
+  out.end_object();
+}
+
+void emit_face_entry(JsonEmitter& out, const FaceOutput& output, bool exact,
+                     const std::function<void()>& members) {
+  const ReceivingFace& face = output.face;
+  out.begin_object();
+  out.key("area");
+  out.number(world_area(face.area, face.frame));
+  out.key("boundary");
+  emit_boundary(out, face, false);
+  if (exact) {
+    out.key("exact");
+    out.begin_object();
+    out.key("boundary");
+    emit_boundary(out, face, true);
+    out.key("plane");
+    emit_plane(out, face.plane, true);
+    out.end_object();
+  }
+  out.key("face");
+  out.integer(face.face);
+  out.key("frame");
+  out.begin_object();
+  out.key("origin");
+  emit_point(out, face.frame.origin());
+  out.key("u");
+  emit_unit(out, face.frame.u());
+  out.key("v");
+  emit_unit(out, face.frame.v());
+  out.end_object();
+  members();
+  out.key("object");
+  out.string(face.object);
+  out.key("plane");
+  emit_plane(out, face.plane, false);
+  out.end_object();
+}
+
+}  // namespace penumbra::io

@@ -1,0 +1,116 @@
+#include <algorithm>
+#include <chrono>
+
+#include "face_json.h"
+#include "penumbra/base/csv.h"
+#include "penumbra/io/sun_hours_document.h"
+
+namespace penumbra::io {
+namespace {
+
+using nlohmann::json;
+using studies::SunHoursResult;
+
+// true when count sun-up steps make at least hours whole hours.
+bool at_least(const SunHoursResult& result, std::size_t count, std::size_t hours) {
+  return result.step * static_cast<long long>(count) >=
+         std::chrono::hours(static_cast<long long>(hours));
+}
+
+// The entry of "faces" for receiver r; members in key order.
+void emit_face(JsonEmitter& out, const Scene& scene, const SunHoursResult& result, std::size_t r,
+               bool exact) {
+  const ReceivingFace face = receiving_face(scene, result.faces, r);
+  const FaceOutput output = plain_output(face);
+  emit_face_entry(out, output, exact, [&] {
+    out.key("hours");
+    out.begin_array();
+    for (const Coverage& part : result.hours[r].parts) {
+      const double minutes = result.minutes(part.count);
+      out.begin_object();
+      out.key("area");
+      out.number(world_area(part.region, face.frame));
+      out.key("hours");
+      out.number(minutes / 60);
+      out.key("minutes");
+      out.number(minutes);
+      emit_polygons(out, part.region, output, exact);
+      out.end_object();
+    }
+    out.end_array();
+  });
+}
+
+}  // namespace
+
+json sun_hours_json(const Scene& scene, const SunHoursResult& result, const SunHoursHeader& header,
+                    bool exact) {
+  json times = json::array();
+  for (const studies::SunStep& step : result.steps)
+    if (step.up())
+      times.push_back({{"time", sun::format_date_time(step.time, header.offset_minutes)},
+                       {"azimuth_deg", step.position.azimuth_deg},
+                       {"elevation_deg", step.position.elevation_deg}});
+  json document = {{"penumbra_sun_hours", 1},
+                   {"sun",
+                    {{"name", header.sun},
+                     {"latitude", header.site.latitude_deg},
+                     {"longitude", header.site.longitude_deg},
+                     {"north_deg", header.north_deg}}},
+                   {"steps",
+                    {{"from", header.from},
+                     {"to", header.to},
+                     {"step_minutes", result.minutes(1)},
+                     {"count", result.steps.size()},
+                     {"sun_up", result.steps_up()},
+                     {"times", std::move(times)}}}};
+  json faces = json::array();
+  for (std::size_t r = 0; r < result.faces.receivers.size(); ++r) {
+    TreeEmitter tree;
+    emit_face(tree, scene, result, r, exact);
+    faces.push_back(std::move(tree.result()));
+  }
+  document["faces"] = std::move(faces);
+  std::size_t longest = 0;
+  for (const studies::FaceSunHours& face : result.hours)
+    for (const Coverage& part : face.parts) longest = std::max(longest, part.count);
+  document["longest_minutes"] = result.minutes(longest);
+  return document;
+}
+
+std::vector<double> areas_at_least(const Scene& scene, const SunHoursResult& result, std::size_t r,
+                                   std::size_t hours) {
+  const ReceivingFace face = receiving_face(scene, result.faces, r);
+  std::vector<double> areas;
+  for (std::size_t h = 0; h <= hours; ++h) {
+    Exact sum = 0;
+    for (const Coverage& part : result.hours[r].parts)
+      if (at_least(result, part.count, h)) sum += part.region.area;
+    areas.push_back(world_area(sum, face.frame));
+  }
+  return areas;
+}
+
+std::size_t longest_whole_hours(const SunHoursResult& result) {
+  std::size_t longest = 0;
+  for (const studies::FaceSunHours& face : result.hours)
+    for (const Coverage& part : face.parts) longest = std::max(longest, part.count);
+  return static_cast<std::size_t>((result.step * static_cast<long long>(longest)) /
+                                  std::chrono::hours(1));
+}
+
+void write_sun_hours_csv(std::ostream& out, const Scene& scene, const SunHoursResult& result) {
+  const std::size_t hours = longest_whole_hours(result);
+  std::vector<std::string> columns{"object", "face", "face_area"};
+  for (std::size_t h = 0; h <= hours; ++h) columns.push_back("area_ge_" + std::to_string(h) + "h");
+  CsvWriter csv(out, columns);
+  for (std::size_t r = 0; r < result.faces.receivers.size(); ++r) {
+    const ReceivingFace face = receiving_face(scene, result.faces, r);
+    csv.text(face.object).integer(static_cast<long long>(face.face));
+    csv.number(world_area(face.area, face.frame));
+    for (double area : areas_at_least(scene, result, r, hours)) csv.number(area);
+    csv.end_row();
+  }
+}
+
+}  // namespace penumbra::io

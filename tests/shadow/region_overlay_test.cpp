@@ -1,0 +1,101 @@
+// The overlay of many regions (region_overlay.h) against counting: at random rational
+// points, the part of the window that holds the point must carry the number of regions
+// that hold it (each tested on its own, exactly), and the parts must tile the window.
+
+#include <boost/test/unit_test.hpp>
+
+#include <random>
+
+#include "penumbra/shadow/region_overlay.h"
+#include "region_set.h"
+#include "shadow_support.h"
+
+using namespace penumbra;
+using namespace penumbra::test;
+
+namespace {
+
+Ring2 square(int x0, int y0, int x1, int y1) {
+  return {Point2(x0, y0), Point2(x1, y0), Point2(x1, y1), Point2(x0, y1)};
+}
+
+// returns a random triangle with integer corners in [0, 12]^2, counter-clockwise.
+Ring2 random_triangle(std::mt19937& random) {
+  std::uniform_int_distribution<int> coordinate(0, 12);
+  for (;;) {
+    Ring2 ring;
+    for (int k = 0; k < 3; ++k) ring.emplace_back(coordinate(random), coordinate(random));
+    const auto turn = CGAL::orientation(ring[0], ring[1], ring[2]);
+    if (turn == CGAL::COLLINEAR) continue;
+    if (turn == CGAL::CLOCKWISE) std::swap(ring[1], ring[2]);
+    return ring;
+  }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(region_overlay)
+
+BOOST_AUTO_TEST_CASE(each_part_carries_the_number_of_regions_over_it) {
+  // The window: [0, 12]^2 with the hole [5, 7]^2 (clockwise).
+  Ring2 hole = square(5, 5, 7, 7);
+  std::reverse(hole.begin(), hole.end());
+  const Polygon2 window{canonical_ring(square(0, 0, 12, 12)), {canonical_ring(hole)}};
+  const Region2 whole = canonical_region({window});
+  std::mt19937 random(20261202);
+  for (int trial = 0; trial < 12; ++trial) {
+    // Regions: unions of one to three random triangles, less the window's hole. Integer
+    // corners make shared edges, shared vertices and collinear overlaps frequent.
+    std::vector<Region2> regions;
+    const int count = 1 + trial % 7;
+    for (int k = 0; k < count; ++k) {
+      std::vector<Ring2> triangles;
+      for (int t = 0; t < 1 + k % 3; ++t) triangles.push_back(random_triangle(random));
+      regions.push_back(detail::unite_minus(triangles, {square(5, 5, 7, 7)}));
+    }
+    std::vector<const Region2*> pointers;
+    for (const Region2& region : regions) pointers.push_back(&region);
+    const std::size_t base = trial % 3;
+    const std::vector<Coverage> parts = coverage(window, pointers, base);
+
+    // The parts tile the window: their areas add up to its area exactly.
+    Exact total = 0;
+    for (const Coverage& part : parts) total += part.region.area;
+    BOOST_TEST((total == whole.area));
+    for (std::size_t k = 1; k < parts.size(); ++k) BOOST_TEST(parts[k - 1].count < parts[k].count);
+
+    std::size_t compared = 0;
+    for (int s = 0; s < 300; ++s) {
+      const Point2 p(Exact(std::uniform_int_distribution<int>(1, 12 * 997 - 1)(random)) / 997,
+                     Exact(std::uniform_int_distribution<int>(1, 12 * 997 - 1)(random)) / 997);
+      if (locate(whole, p) != Where::inside) continue;
+      std::size_t expected = base;
+      bool on_boundary = false;
+      for (const Region2& region : regions) {
+        const Where where = locate(region, p);
+        on_boundary = on_boundary || where == Where::boundary;
+        expected += where == Where::inside;
+      }
+      if (on_boundary) continue;
+      std::size_t holding = 0;
+      for (const Coverage& part : parts)
+        if (locate(part.region, p) == Where::inside) {
+          ++holding;
+          BOOST_TEST(part.count == expected);
+        }
+      BOOST_TEST(holding == 1u);
+      ++compared;
+    }
+    BOOST_TEST(compared > 200u);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(no_regions_leave_the_window_whole_with_the_base_count) {
+  const Polygon2 window{canonical_ring(square(0, 0, 3, 2)), {}};
+  const std::vector<Coverage> parts = coverage(window, {}, 5);
+  BOOST_TEST_REQUIRE(parts.size() == 1u);
+  BOOST_TEST(parts.front().count == 5u);
+  BOOST_TEST((parts.front().region == canonical_region({window})));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
