@@ -2,36 +2,22 @@
 
 #include <CGAL/box_intersection_d.h>
 
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <numeric>
 #include <set>
 
+#include <CGAL/Arr_consolidated_curve_data_traits_2.h>
 #include <CGAL/Arr_extended_dcel.h>
-#include <CGAL/Arr_overlay_2.h>
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
 #include <CGAL/Polygon_2_algorithms.h>
-#include <CGAL/Polygon_set_2.h>
-#include <tbb/parallel_invoke.h>
 
 #include "penumbra/base/parallel.h"
 
 namespace penumbra {
 namespace {
-
-// Polygon sets whose arrangement faces also carry a count (besides the Boolean operations'
-// own "contained" flag): a region is inserted as a polygon set and overlaid as an arrangement.
-using Traits = CGAL::Gps_segment_traits_2<Kernel, std::vector<Point2>>;
-using Dcel =
-    CGAL::Arr_face_extended_dcel<Traits, std::size_t, CGAL::Arr_vertex_base<Traits::Point_2>,
-                                 CGAL::Gps_halfedge_base<Traits::X_monotone_curve_2>,
-                                 CGAL::Gps_face_base>;
-using CountedSet = CGAL::Polygon_set_2<Kernel, std::vector<Point2>, Dcel>;
-using Arrangement = CountedSet::Arrangement_2;
-
-struct Sum {
-  std::size_t operator()(std::size_t a, std::size_t b) const { return a + b; }
-};
-using SumOverlay = CGAL::Arr_face_overlay_traits<Arrangement, Arrangement, Arrangement, Sum>;
 
 // One polygon of one of the regions, as the clusters gather them.
 struct Piece {
@@ -67,62 +53,76 @@ std::vector<std::vector<Piece>> clusters_of(const std::vector<Piece>& pieces) {
   return clusters;
 }
 
-// returns the arrangement of disjoint polygons whose faces count weight inside them and 0
-// outside. The edges go in by a sweep that finds every meeting (CGAL::insert), not as
-// polygons: canonical rings may touch themselves or each other with a vertex on an edge
-// (canonical_ring drops the vertex that split that edge), which insertion as non-crossing
-// curves does not allow. Inside is then told by parity, from the unbounded face outward:
-// every edge is on the boundary of exactly one polygon.
-std::unique_ptr<CountedSet> leaf(const std::vector<const Polygon2*>& polygons, std::size_t weight) {
-  std::vector<Traits::Curve_2> segments;
-  const auto add = [&](const Ring2& ring) {
-    for (std::size_t k = 0; k < ring.size(); ++k)
-      segments.emplace_back(ring[k], ring[(k + 1) % ring.size()]);
-  };
-  for (const Polygon2* polygon : polygons) {
-    add(polygon->outer);
-    for (const Ring2& hole : polygon->holes) add(hole);
+// One arrangement of the edges of all the layers overlaid, each edge knowing the layers it
+// bounds and on which side (Arr_consolidated_curve_data_traits_2: overlapping edges of
+// several layers become one edge with all their marks), each face its count.
+using SegmentTraits = CGAL::Arr_segment_traits_2<Kernel>;
+// A mark: +k when layer k - 1 lies on the left of the edge directed from its
+// lexicographically smaller end to its larger one, -k when on its right.
+using Traits = CGAL::Arr_consolidated_curve_data_traits_2<SegmentTraits, long>;
+using Dcel = CGAL::Arr_face_extended_dcel<Traits, long>;
+using Arrangement = CGAL::Arrangement_2<Traits, Dcel>;
+
+// A region to overlay: its polygons (canonical rings, inside on the left of each) and what
+// it adds to the count of the points it holds.
+struct Layer {
+  std::vector<const Polygon2*> polygons;
+  long weight = 1;
+};
+
+// returns the overlay of layers made in one sweep (CGAL::insert finds every meeting of
+// edges, touching included: canonical rings may touch themselves with a vertex on an edge,
+// which insertion as non-crossing curves does not allow), each face counting the weights of
+// the layers that hold it. Counts spread from the unbounded face (0): crossing an edge
+// from a face into its neighbour subtracts the weight of each layer the edge bounds on the
+// face's side and adds that of each it bounds on the neighbour's.
+std::unique_ptr<Arrangement> overlay(const std::vector<Layer>& layers) {
+  std::vector<Traits::Curve_2> curves;
+  for (std::size_t k = 0; k < layers.size(); ++k) {
+    const long mark = static_cast<long>(k) + 1;
+    const auto add = [&](const Ring2& ring) {
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Point2& p = ring[i];
+        const Point2& q = ring[(i + 1) % ring.size()];
+        curves.emplace_back(SegmentTraits::Curve_2(p, q),
+                            CGAL::compare_xy(p, q) == CGAL::SMALLER ? mark : -mark);
+      }
+    };
+    for (const Polygon2* polygon : layers[k].polygons) {
+      add(polygon->outer);
+      for (const Ring2& hole : polygon->holes) add(hole);
+    }
   }
-  auto set = std::make_unique<CountedSet>();
-  Arrangement& arrangement = set->arrangement();
-  CGAL::insert(arrangement, segments.begin(), segments.end());
-  for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f) f->set_visited(false);
-  std::vector<Arrangement::Face_handle> queue{arrangement.unbounded_face()};
-  queue.front()->set_data(0);
-  queue.front()->set_visited(true);
+  auto arrangement = std::make_unique<Arrangement>();
+  CGAL::insert(*arrangement, curves.begin(), curves.end());
+  using Face = Arrangement::Face_handle;
+  std::set<Face> reached{arrangement->unbounded_face()};
+  arrangement->unbounded_face()->set_data(0);
+  std::vector<Face> queue{arrangement->unbounded_face()};
   while (!queue.empty()) {
-    const Arrangement::Face_handle face = queue.back();
+    const Face face = queue.back();
     queue.pop_back();
     const auto cross = [&](Arrangement::Ccb_halfedge_circulator ccb) {
       auto halfedge = ccb;
       do {
-        const Arrangement::Face_handle other = halfedge->twin()->face();
-        if (!other->visited()) {
-          other->set_data(face->data() == 0 ? weight : 0);
-          other->set_visited(true);
-          queue.push_back(other);
+        const Face other = halfedge->twin()->face();
+        if (!reached.insert(other).second) continue;
+        // face is on the halfedge's left: directed left to right, a mark k > 0 puts layer
+        // k - 1 on face's side.
+        const bool rightward = halfedge->direction() == CGAL::ARR_LEFT_TO_RIGHT;
+        long count = face->data();
+        for (const long mark : halfedge->curve().data()) {
+          const long weight = layers[static_cast<std::size_t>(std::labs(mark)) - 1].weight;
+          count += (mark > 0) == rightward ? -weight : weight;
         }
+        other->set_data(count);
+        queue.push_back(other);
       } while (++halfedge != ccb);
     };
     if (!face->is_unbounded()) cross(face->outer_ccb());
     for (auto hole = face->inner_ccbs_begin(); hole != face->inner_ccbs_end(); ++hole) cross(*hole);
   }
-  return set;
-}
-
-// returns the overlay of leaves[begin, end), each face counting the sum of the faces it lies
-// in: halves overlaid recursively, so each edge takes part in log2(n) overlays.
-std::unique_ptr<CountedSet> overlay(std::vector<std::unique_ptr<CountedSet>>& leaves,
-                                    std::size_t begin, std::size_t end) {
-  if (end - begin == 1) return std::move(leaves[begin]);
-  const std::size_t middle = begin + (end - begin) / 2;
-  std::unique_ptr<CountedSet> low, high;
-  tbb::parallel_invoke([&] { low = overlay(leaves, begin, middle); },
-                       [&] { high = overlay(leaves, middle, end); });
-  auto both = std::make_unique<CountedSet>();
-  SumOverlay sum;
-  CGAL::overlay(low->arrangement(), high->arrangement(), both->arrangement(), sum);
-  return both;
+  return arrangement;
 }
 
 // returns the polygons of the arrangement's faces by key (faces of key < 0 left out), read in
@@ -131,9 +131,7 @@ std::unique_ptr<CountedSet> overlay(std::vector<std::unique_ptr<CountedSet>>& le
 // traced into rings, turning at each vertex into the next boundary halfedge of the same key
 // around it, so that sets touching at a vertex give separate rings. Counter-clockwise rings
 // are the polygons' outer boundaries, clockwise ones their holes, each in the polygon of the
-// face on its left. Not polygons_with_holes: it builds rings from the curves' endpoints, and
-// the overlay keeps the input curves' directions, not the ones it expects (a face of four
-// vertices came out as a triangle with a repeated corner).
+// face on its left.
 template <typename Key>
 std::map<std::ptrdiff_t, std::vector<Polygon2>> polygons_by_key(const Arrangement& arrangement,
                                                                 const Key& key_of) {
@@ -201,31 +199,26 @@ ClusterParts overlay_cluster(const std::vector<Piece>& cluster) {
     parts.extent = {*cluster.front().polygon};
     return parts;
   }
-  std::map<std::size_t, std::vector<const Polygon2*>> by_region;
-  for (const Piece& piece : cluster) by_region[piece.region].push_back(piece.polygon);
-  std::vector<std::unique_ptr<CountedSet>> leaves;
-  for (const auto& entry : by_region) leaves.push_back(leaf(entry.second, 1));
-  const std::unique_ptr<CountedSet> all = overlay(leaves, 0, leaves.size());
-  for (auto& [count, polygons] : polygons_by_key(all->arrangement(), [](std::size_t data) {
-         return data > 0 ? static_cast<std::ptrdiff_t>(data) : -1;
-       }))
+  std::map<std::size_t, Layer> by_region;
+  for (const Piece& piece : cluster) by_region[piece.region].polygons.push_back(piece.polygon);
+  std::vector<Layer> layers;
+  for (auto& entry : by_region) layers.push_back(std::move(entry.second));
+  const std::unique_ptr<Arrangement> all = overlay(layers);
+  for (auto& [count, polygons] : polygons_by_key(
+           *all, [](long data) { return data > 0 ? static_cast<std::ptrdiff_t>(data) : -1; }))
     parts.by_count[static_cast<std::size_t>(count)] = std::move(polygons);
-  parts.extent = std::move(
-      polygons_by_key(all->arrangement(), [](std::size_t data) { return data > 0 ? 0 : -1; })[0]);
+  parts.extent = std::move(polygons_by_key(*all, [](long data) { return data > 0 ? 0 : -1; })[0]);
   return parts;
 }
 
 // returns window less the polygons of extents (disjoint): the faces of the window's and the
 // extents' overlay that lie in the window only.
 Region2 window_less(const Polygon2& window, const std::vector<Polygon2>& extents) {
-  std::vector<std::unique_ptr<CountedSet>> leaves;
-  leaves.push_back(leaf({&window}, 2));
-  std::vector<const Polygon2*> covered;
-  for (const Polygon2& polygon : extents) covered.push_back(&polygon);
-  if (!covered.empty()) leaves.push_back(leaf(covered, 1));
-  const std::unique_ptr<CountedSet> all = overlay(leaves, 0, leaves.size());
-  return canonical_region(std::move(
-      polygons_by_key(all->arrangement(), [](std::size_t data) { return data == 2 ? 0 : -1; })[0]));
+  std::vector<Layer> layers{{{&window}, 2}, {{}, 1}};
+  for (const Polygon2& polygon : extents) layers.back().polygons.push_back(&polygon);
+  const std::unique_ptr<Arrangement> all = overlay(layers);
+  return canonical_region(
+      std::move(polygons_by_key(*all, [](long data) { return data == 2 ? 0 : -1; })[0]));
 }
 
 }  // namespace
