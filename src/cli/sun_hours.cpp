@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <variant>
 #include <vector>
@@ -87,28 +88,39 @@ SunPlacement study_sun(const Scene& scene, const SunHoursArguments& arguments) {
   return sun;
 }
 
-// prints the area of the region's faces that gets at least threshold of sun.
+// returns "A m2 of T m2 (P %)".
+std::string area_share(double reached, double total) {
+  char text[128];
+  std::snprintf(text, sizeof text, "%.6g m2 of %.6g m2 (%.2f %%)", reached, total,
+                total > 0 ? 100 * reached / total : 0.0);
+  return text;
+}
+
+// prints the area of the region's faces that gets at least threshold of sun, then the
+// same for each of its faces (a garden modelled as a box is its top face).
 void report_threshold(const Scene& scene, const studies::SunHoursResult& result,
                       const std::vector<std::size_t>& objects, sun::Duration threshold,
                       const std::string& region) {
   std::vector<bool> chosen(scene.objects.size(), false);
   for (std::size_t object : objects) chosen[object] = true;
   double total = 0, reached = 0;
+  std::ostringstream faces;
   for (std::size_t r = 0; r < result.faces.receivers.size(); ++r) {
     if (!chosen[result.faces.receivers[r].object]) continue;
     const ReceivingFace face = receiving_face(scene, result.faces, r);
     Exact sum = 0;
     for (const Coverage& part : result.hours[r].parts)
       if (result.step * static_cast<long long>(part.count) >= threshold) sum += part.region.area;
-    total += io::world_area(face.area, face.frame);
-    reached += io::world_area(sum, face.frame);
+    const double area = io::world_area(face.area, face.frame),
+                 lit = io::world_area(sum, face.frame);
+    total += area;
+    reached += lit;
+    faces << "  " << face.object << " face " << face.face << ": " << area_share(lit, area) << "\n";
   }
   const double minutes = std::chrono::duration<double, std::ratio<60>>(threshold).count();
-  char line[256];
-  std::snprintf(line, sizeof line, "%.6g m2 of %.6g m2 (%.2f %%)", reached, total,
-                total > 0 ? 100 * reached / total : 0.0);
-  std::cout << "region " << region << ": " << line << " gets at least " << minutes / 60
-            << " h of direct sun\n";
+  std::cout << "region " << region << ": " << area_share(reached, total) << " gets at least "
+            << minutes / 60 << " h of direct sun\n"
+            << faces.str();
 }
 
 int run_sun_hours(const SunHoursArguments& arguments) {
@@ -177,17 +189,19 @@ int run_sun_hours(const SunHoursArguments& arguments) {
   header.to = sun::format_date_time(end, offset);
   header.north_deg = scene.north_deg;
   header.site = sun.site;
-  const bool document_wanted = !arguments.output.empty() || !arguments.svg.empty() ||
-                               !arguments.png.empty() || (arguments.report.empty() && !threshold);
+  // The JSON goes to standard output with "-o -", or when nothing else is asked for.
+  const bool to_stdout =
+      arguments.output == "-" || (arguments.output.empty() && arguments.report.empty() &&
+                                  !threshold && arguments.svg.empty() && arguments.png.empty());
   nlohmann::json document;
-  if (document_wanted) document = io::sun_hours_json(scene, result, header, arguments.exact);
+  if (to_stdout || !arguments.output.empty() || !arguments.svg.empty() || !arguments.png.empty())
+    document = io::sun_hours_json(scene, result, header, arguments.exact);
   // Every file is written whole or not at all; the first to fail stops the rest.
-  if (!arguments.output.empty() && arguments.output != "-")
+  if (to_stdout)
+    std::cout << io::format_json(document);
+  else if (!arguments.output.empty())
     write_atomically(arguments.output,
                      [&](std::ostream& out) { out << io::format_json(document); });
-  else if (document_wanted && arguments.report.empty() && !threshold && arguments.svg.empty() &&
-           arguments.png.empty())
-    std::cout << io::format_json(document);
   if (!arguments.report.empty())
     write_atomically(arguments.report,
                      [&](std::ostream& out) { io::write_sun_hours_csv(out, scene, result); });

@@ -155,6 +155,11 @@ BOOST_AUTO_TEST_CASE(sun_hours_writes_its_documents_and_answers_the_threshold) {
   std::ostringstream expected;
   expected << "region ground: " << std::setprecision(6) << ground << " m2";
   BOOST_TEST(contains(threshold.out, expected.str()), threshold.out);
+  // Then one line per face of the region: the ground box's top face (3) is the garden.
+  std::ostringstream top;
+  top << "  ground face 3: " << std::setprecision(6) << std::stod(csv.at("area_ge_2h")[3]) << " m2";
+  BOOST_TEST(csv.at("object")[3] == "ground");
+  BOOST_TEST(contains(threshold.out, top.str()), threshold.out);
 
   // Bad input: exit 2, nothing written.
   std::filesystem::remove_all(dir);

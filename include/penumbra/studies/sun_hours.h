@@ -1,10 +1,11 @@
 #pragma once
 // Sun-hours (issue 19, docs/sun-hours.md): how long each part of every face is in direct
 // sun over a range of time steps. Each step where the sun's centre is above the horizon
-// lights the scene from the sun's direction then; the exact lit set of every face at every
-// such step (shadow_map.h) is overlaid with the others (region_overlay.h), so every part
-// of a face carries the number of steps that light it, and the duration is that number
-// times the step length (DESIGN.md: "each sun-up step counting one step length").
+// lights the scene from the sun's direction then; the exact shadows on every face at every
+// such step (shadow_map.h) are overlaid (region_overlay.h), so every part of a face carries
+// the number of steps that light it (those the face faces less those whose shadow holds
+// it), and the duration is that number times the step length (DESIGN.md: "each sun-up step
+// counting one step length").
 
 #include <cstddef>
 #include <functional>
