@@ -20,7 +20,7 @@ std::string time_colour(std::size_t k, std::size_t count) {
       scale_colour(count > 1 ? static_cast<double>(k) / static_cast<double>(count - 1) : 0));
 }
 
-// an SVG id for a time: "time-" and the text with every character that an XML name
+// an SVG class for a time: "time-" and the text with every character that an XML name
 // cannot hold turned into '-'.
 std::string layer_id(const std::string& time) {
   std::string id = "time-";
@@ -51,33 +51,31 @@ void write_shadow_diagram_svg(std::ostream& out, const json& diagram) {
   const double legend_height = 40 + 18.0 * static_cast<double>(times.size() + 1);
   std::vector<FaceDrawing> drawings;
   const Projection project = plan_projection();
-  if (!times.empty()) {
-    // The faces (the same at every time): outlined, lowest first.
-    for (const json& face : times.front().at("shadows").at("faces"))
-      if (const auto depth = plan_depth(face)) {
-        FaceDrawing drawing{*depth, {}};
-        Shape outline{
-            {}, "fill=\"#f4f4f4\" fill-rule=\"evenodd\" stroke=\"#333\" stroke-width=\"0.6\""};
-        for (const json* ring : boundary_rings(face))
-          if (auto flat = project_ring(*ring, project)) outline.rings.push_back(*flat);
-        drawing.shapes.push_back(std::move(outline));
-        drawings.push_back(std::move(drawing));
-      }
-  }
-  // Then each time's shadows over all faces, time after time, a layer each.
-  for (std::size_t k = 0; k < times.size(); ++k) {
-    const std::string colour = time_colour(k, times.size());
-    const std::string style = "fill=\"" + colour +
-                              "\" fill-opacity=\"0.25\" fill-rule=\"evenodd\" stroke=\"" + colour +
-                              "\" stroke-width=\"0.8\"";
-    FaceDrawing layer{-1e300, {}, layer_id(times[k].at("time").get<std::string>())};
-    for (const json& face : times[k].at("shadows").at("faces")) {
-      if (!plan_depth(face)) continue;
-      for (const json& light : face.at("lights"))
+  // Each face turned up (the same faces at every time), lowest first: its outline, then its
+  // shadow at each time in that time's colour and layer, so that a roof hides the ground's
+  // shadows under it.
+  const json* faces = times.empty() ? nullptr : &times.front().at("shadows").at("faces");
+  for (std::size_t f = 0; faces && f < faces->size(); ++f) {
+    const auto depth = plan_depth((*faces)[f]);
+    if (!depth) continue;
+    FaceDrawing drawing{*depth, {}};
+    Shape outline{{},
+                  "fill=\"#f4f4f4\" fill-rule=\"evenodd\" stroke=\"#333\" stroke-width=\"0.6\""};
+    for (const json* ring : boundary_rings((*faces)[f]))
+      if (auto flat = project_ring(*ring, project)) outline.rings.push_back(*flat);
+    drawing.shapes.push_back(std::move(outline));
+    drawings.push_back(std::move(drawing));
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      const std::string colour = time_colour(k, times.size());
+      const std::string style = "fill=\"" + colour +
+                                "\" fill-opacity=\"0.25\" fill-rule=\"evenodd\" stroke=\"" +
+                                colour + "\" stroke-width=\"0.8\"";
+      FaceDrawing shadows{*depth, {}, layer_id(times[k].at("time").get<std::string>())};
+      for (const json& light : times[k].at("shadows").at("faces")[f].at("lights"))
         if (!light.at("faces_away").get<bool>())
-          add_region(layer, light.at("shadow"), style, project);
+          add_region(shadows, light.at("shadow"), style, project);
+      drawings.push_back(std::move(shadows));
     }
-    drawings.push_back(std::move(layer));
   }
   std::ostringstream body;
   body << std::setprecision(6);

@@ -78,7 +78,7 @@ void emit(std::ostream& out, std::vector<FaceDrawing> drawings, double x0, doubl
     if (drawing.layer != layer) {
       if (!layer.empty()) out << "</g>\n";
       layer = drawing.layer;
-      if (!layer.empty()) out << "<g id=\"" << escape_xml(layer) << "\">\n";
+      if (!layer.empty()) out << "<g class=\"" << escape_xml(layer) << "\">\n";
     }
     for (const auto& shape : drawing.shapes) {
       out << "<path " << shape.style << " d=\"";

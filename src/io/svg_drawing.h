@@ -32,7 +32,7 @@ struct Shape {
 struct FaceDrawing {
   double depth;  // drawn from largest to smallest
   std::vector<Shape> shapes;
-  std::string layer{};  // drawn inside <g id="layer"> with the drawings next to it of that layer
+  std::string layer{};  // drawn inside <g class="layer"> with the drawings next to it of that layer
 };
 
 // returns a ring of world points (JSON) projected, or nullopt when a point cannot be.

@@ -214,8 +214,8 @@ BOOST_AUTO_TEST_CASE(shadow_diagram_holds_each_time_as_the_scene_at_that_time) {
     }
   }
   const std::string drawing = read_text(svg);
-  BOOST_TEST(contains(drawing, "<g id=\"time-2026-03-21T08-00-00-00-00\">"));
-  BOOST_TEST(contains(drawing, "<g id=\"time-2026-03-21T12-00-00-00-00\">"));
+  BOOST_TEST(contains(drawing, "<g class=\"time-2026-03-21T08-00-00-00-00\">"));
+  BOOST_TEST(contains(drawing, "<g class=\"time-2026-03-21T12-00-00-00-00\">"));
   // One time only: --dxf, --report and --loops are refused with --times; bad times too.
   for (const char* bad : {"--times 2026-03-21T12:00 --dxf x.dxf", "--times 2026-03-21T25:00",
                           "--times 2026-03-21T12:00,2026-03-21T08:00,1h"})

@@ -25,9 +25,9 @@ struct DiagramTime {
 nlohmann::json shadow_diagram_json(const std::string& sun, const std::vector<DiagramTime>& times,
                                    const std::vector<std::string>& skipped);
 
-// writes the plan view: the faces turned up (lowest first) outlined, then for each time a
-// layer <g id="time-..."> with its shadows on those faces in the time's colour, and a legend
-// of the times (and of the skipped ones).
+// writes the plan view: the faces turned up, lowest first, each outlined and then with its
+// shadow at each time in the time's colour, in groups <g class="time-..."> (a layer per time
+// for stylesheets and drawing programs), and a legend of the times (and of the skipped ones).
 void write_shadow_diagram_svg(std::ostream& out, const nlohmann::json& diagram);
 
 }  // namespace penumbra::io
