@@ -108,11 +108,8 @@ void report_threshold(const Scene& scene, const studies::SunHoursResult& result,
   for (std::size_t r = 0; r < result.faces.receivers.size(); ++r) {
     if (!chosen[result.faces.receivers[r].object]) continue;
     const ReceivingFace face = receiving_face(scene, result.faces, r);
-    Exact sum = 0;
-    for (const Coverage& part : result.hours[r].parts)
-      if (result.step * static_cast<long long>(part.count) >= threshold) sum += part.region.area;
-    const double area = io::world_area(face.area, face.frame),
-                 lit = io::world_area(sum, face.frame);
+    const double area = io::world_area(face.area, face.frame);
+    const double lit = io::world_area(result.area_at_least(r, threshold), face.frame);
     total += area;
     reached += lit;
     faces << "  " << face.object << " face " << face.face << ": " << area_share(lit, area) << "\n";

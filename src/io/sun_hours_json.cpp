@@ -11,12 +11,6 @@ namespace {
 using nlohmann::json;
 using studies::SunHoursResult;
 
-// true when count sun-up steps make at least hours whole hours.
-bool at_least(const SunHoursResult& result, std::size_t count, std::size_t hours) {
-  return result.step * static_cast<long long>(count) >=
-         std::chrono::hours(static_cast<long long>(hours));
-}
-
 // The entry of "faces" for receiver r; members in key order.
 void emit_face(JsonEmitter& out, const Scene& scene, const SunHoursResult& result, std::size_t r,
                bool exact) {
@@ -71,10 +65,7 @@ json sun_hours_json(const Scene& scene, const SunHoursResult& result, const SunH
     faces.push_back(std::move(tree.result()));
   }
   document["faces"] = std::move(faces);
-  std::size_t longest = 0;
-  for (const studies::FaceSunHours& face : result.hours)
-    for (const Coverage& part : face.parts) longest = std::max(longest, part.count);
-  document["longest_minutes"] = result.minutes(longest);
+  document["longest_minutes"] = result.minutes(result.longest_count());
   return document;
 }
 
@@ -82,20 +73,14 @@ std::vector<double> areas_at_least(const Scene& scene, const SunHoursResult& res
                                    std::size_t hours) {
   const ReceivingFace face = receiving_face(scene, result.faces, r);
   std::vector<double> areas;
-  for (std::size_t h = 0; h <= hours; ++h) {
-    Exact sum = 0;
-    for (const Coverage& part : result.hours[r].parts)
-      if (at_least(result, part.count, h)) sum += part.region.area;
-    areas.push_back(world_area(sum, face.frame));
-  }
+  for (std::size_t h = 0; h <= hours; ++h)
+    areas.push_back(world_area(
+        result.area_at_least(r, std::chrono::hours(static_cast<long long>(h))), face.frame));
   return areas;
 }
 
 std::size_t longest_whole_hours(const SunHoursResult& result) {
-  std::size_t longest = 0;
-  for (const studies::FaceSunHours& face : result.hours)
-    for (const Coverage& part : face.parts) longest = std::max(longest, part.count);
-  return static_cast<std::size_t>((result.step * static_cast<long long>(longest)) /
+  return static_cast<std::size_t>((result.step * static_cast<long long>(result.longest_count())) /
                                   std::chrono::hours(1));
 }
 

@@ -57,6 +57,20 @@ double SunHoursResult::minutes(std::size_t count) const {
   return static_cast<double>(count) * std::chrono::duration<double, std::ratio<60>>(step).count();
 }
 
+std::size_t SunHoursResult::longest_count() const {
+  std::size_t longest = 0;
+  for (const FaceSunHours& face : hours)
+    for (const Coverage& part : face.parts) longest = std::max(longest, part.count);
+  return longest;
+}
+
+Exact SunHoursResult::area_at_least(std::size_t r, sun::Duration threshold) const {
+  Exact sum = 0;
+  for (const Coverage& part : hours[r].parts)
+    if (step * static_cast<long long>(part.count) >= threshold) sum += part.region.area;
+  return sum;
+}
+
 SunHoursResult sun_hours(const Scene& scene, const SunPlacement& sun,
                          const std::vector<sun::UtcInstant>& instants, sun::Duration step,
                          const SunHoursOptions& options) {

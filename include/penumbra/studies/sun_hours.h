@@ -69,6 +69,11 @@ struct SunHoursResult {
   std::size_t steps_up() const;
   // returns the duration that count sun-up steps make, in minutes.
   double minutes(std::size_t count) const;
+  // returns the most sun-up steps that light any part of any face.
+  std::size_t longest_count() const;
+  // returns the area of face r (in its frame's units, exactly) that at least threshold of
+  // sun reaches.
+  Exact area_at_least(std::size_t r, sun::Duration threshold) const;
 };
 
 // computes the sun-hours of every face of scene (or of options.receivers) under sun (one
