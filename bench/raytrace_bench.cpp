@@ -6,6 +6,9 @@
 //   - the full parallel render (TBB over tiles);
 //   - anti-aliasing at equal quality: adaptive (Whitted section 3) against fixed k x k
 //     supersampling, each compared with a 8 x 8 supersampled reference (smaller image).
+//   - Bézier patches (issue #23): the teapot scenes (bezier-teapot.json, bezier-glass.json)
+//     at 640 x 480, adaptive, with the patches intersected against the same scene traced as
+//     its tessellation (14,280 triangles).
 // Counters: rays and rays per second; for anti-aliasing the camera rays per pixel and the
 // RMS error of the 8-bit sRGB image against the reference.
 
@@ -28,7 +31,7 @@ namespace {
 using namespace penumbra;
 using namespace penumbra::raytrace;
 
-const char* const kFigures[] = {"whitted-fig6", "whitted-fig7"};
+const char* const kFigures[] = {"whitted-fig6", "whitted-fig7", "bezier-teapot", "bezier-glass"};
 
 // loads a fixture scene once and keeps it (the tracer holds a reference to it).
 const Scene& figure(int index, int width, int height) {
@@ -100,6 +103,22 @@ void parallel_render(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
 }
 
+// range(0): the teapot scene; range(1): 0 the patches, 1 their tessellation.
+void bezier_patches(benchmark::State& state) {
+  const Scene& scene = figure(static_cast<int>(state.range(0)), 640, 480);
+  TraceOptions trace;
+  trace.patches = state.range(1) ? PatchSurfaces::tessellated : PatchSurfaces::exact;
+  const RayTracer tracer(scene, trace);
+  RenderOptions options;
+  options.progress = false;
+  std::uint64_t rays = 0;
+  for (auto _ : state) rays += render(tracer, *scene.camera, options).counts.total();
+  state.SetLabel(std::string(kFigures[state.range(0)]) +
+                 (state.range(1) ? " tessellated" : " patches"));
+  state.counters["rays_per_s"] =
+      benchmark::Counter(static_cast<double>(rays), benchmark::Counter::kIsRate);
+}
+
 // the RMS difference of two images in 8-bit sRGB levels at a common exposure.
 double rms_levels(const RenderedImage& image, const RenderedImage& reference) {
   const auto a = to_srgb8(image.pixels, reference.exposure);
@@ -154,6 +173,13 @@ BENCHMARK(parallel_render)
     ->Args({1, 0})
     ->Args({0, 1})
     ->Args({1, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(bezier_patches)
+    ->Args({2, 0})
+    ->Args({2, 1})
+    ->Args({3, 0})
+    ->Args({3, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(anti_aliasing_quality)

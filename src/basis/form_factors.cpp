@@ -210,7 +210,7 @@ double point_polygon_form_factor(const Vec3d& point, const Vec3d& normal,
 FormFactorMatrix form_factors(const Scene& scene, const PatchMesh& mesh,
                               const FormFactorOptions& options,
                               const std::function<void(std::size_t)>& progress) {
-  const raytrace::EmbreeScene embree(scene);
+  const raytrace::EmbreeScene embree(scene, raytrace::PatchSurfaces::tessellated);
   const SphereNormals spheres = sphere_normals(scene);
   // as the ray tracer: Embree traverses in single precision (raytrace/ray_tracer.cpp)
   const double offset = 1e-5 * embree.scale();

@@ -25,6 +25,7 @@ struct RaytraceArguments {
   int aa_depth = 3;
   double aa_threshold = 0.1;
   bool fresnel = false;
+  bool tessellated = false;
   std::string attenuation = "none";
   std::string exposure = "auto";
   std::string values;
@@ -57,6 +58,7 @@ int run_raytrace(const RaytraceArguments& args) {
   raytrace::TraceOptions trace;
   trace.max_depth = args.depth;
   trace.fresnel = args.fresnel;
+  if (args.tessellated) trace.patches = raytrace::PatchSurfaces::tessellated;
   trace.attenuation =
       args.attenuation == "linear" ? raytrace::Attenuation::linear : raytrace::Attenuation::none;
   trace.tube_samples = args.tube_samples;
@@ -115,6 +117,9 @@ void register_raytrace(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
   verb->add_flag("--fresnel", args->fresnel, "k_s, k_t from the dielectric Fresnel equations");
+  verb->add_flag("--tessellated", args->tessellated,
+                 "trace Bezier patch objects as their tessellation (flat triangles), not the "
+                 "patches");
   verb->add_option("--attenuation", args->attenuation,
                    "none, or linear with distance as in Whitted section 2")
       ->capture_default_str()

@@ -110,7 +110,17 @@ json shadow_header_json(const Scene& scene, const ShadowResult& result,
     lights.push_back(std::move(entry));
   }
   document["lights"] = std::move(lights);
-
+  // Bézier patch objects are seen through their tessellation (docs/bezier-patches.md): the
+  // boundaries on and of them are the tessellation's.
+  if (!scene.tessellated.empty()) {
+    json tessellated = json::array();
+    for (const TessellatedPatches& record : scene.tessellated)
+      tessellated.push_back({{"object", record.name},
+                             {"patches", record.patches},
+                             {"triangles", record.triangles},
+                             {"tolerance", record.tolerance}});
+    document["tessellated"] = std::move(tessellated);
+  }
   return document;
 }
 

@@ -2,12 +2,15 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "penumbra/base/vec3d.h"
+#include "penumbra/raytrace/bezier_intersection.h"
 #include "penumbra/scene/scene.h"
 
 namespace penumbra::raytrace {
@@ -49,6 +52,23 @@ RTCRayHit embree_ray(const Ray& ray) {
   return query;
 }
 
+// Embree's intersection context with the ray in double precision, so that the patch
+// callbacks intersect the ray as the caller gave it; and the double-precision patch hit the
+// callbacks accepted last (the nearest so far).
+struct PatchContext {
+  RTCIntersectContext context;
+  const Ray* ray;
+  PatchHit patch_hit{};
+  explicit PatchContext(const Ray* r) : ray(r) { rtcInitIntersectContext(&context); }
+};
+
+// the ray of a callback in double precision: the caller's, cut to Embree's current segment.
+Ray callback_ray(const PatchContext& context, RTCRayN* rays, unsigned n) {
+  Ray ray = *context.ray;
+  ray.t_far = std::min(ray.t_far, static_cast<double>(RTCRayN_tfar(rays, n, 0)));
+  return ray;
+}
+
 }  // namespace
 
 struct EmbreeScene::Impl {
@@ -59,6 +79,10 @@ struct EmbreeScene::Impl {
   // triangle primitive -> (object, face); sphere primitive -> object.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> triangle_faces;
   std::vector<std::uint32_t> sphere_objects;
+  unsigned patch_geometry = RTC_INVALID_GEOMETRY_ID;
+  std::vector<BezierPatch> patches;            // every patch of every patch object
+  std::vector<std::uint32_t> patch_objects;    // per patch: the object hits report
+  std::vector<PatchPiece> pieces;              // user primitive -> piece of patches[piece.patch]
   std::vector<std::vector<FacePlane>> planes;  // per object, per face
   std::vector<bool> flat;                      // per object: a two-sided polygon
   std::vector<BoundingSphere> bounds;
@@ -76,10 +100,71 @@ struct EmbreeScene::Impl {
                                std::to_string(static_cast<int>(error)) + ")");
   }
 
+  // the bounds of a piece of a patch: its control points' box, rounded outward to floats.
+  static void piece_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto& impl = *static_cast<const Impl*>(args->geometryUserPtr);
+    const PatchPiece& piece = impl.pieces[args->primID];
+    const Vec3d& low = piece.low;
+    const Vec3d& high = piece.high;
+    const float down = -std::numeric_limits<float>::infinity();
+    const float up = std::numeric_limits<float>::infinity();
+    RTCBounds& box = *args->bounds_o;
+    box.lower_x = std::nextafter(to_float(low[0]), down);
+    box.lower_y = std::nextafter(to_float(low[1]), down);
+    box.lower_z = std::nextafter(to_float(low[2]), down);
+    box.upper_x = std::nextafter(to_float(high[0]), up);
+    box.upper_y = std::nextafter(to_float(high[1]), up);
+    box.upper_z = std::nextafter(to_float(high[2]), up);
+  }
+
+  std::optional<PatchHit> piece_hit(unsigned piece, const Ray& ray) const {
+    const PatchPiece& p = pieces[piece];
+    return intersect_piece(patches[p.patch], p, ray);
+  }
+
+  static void intersect_piece_callback(const RTCIntersectFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    const auto& impl = *static_cast<const Impl*>(args->geometryUserPtr);
+    auto& context = *reinterpret_cast<PatchContext*>(args->context);
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+    const auto hit = impl.piece_hit(args->primID, callback_ray(context, rays, args->N));
+    if (!hit) return;
+    context.patch_hit = *hit;
+    RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
+    const Vec3d normal = impl.patches[impl.pieces[args->primID].patch].normal(hit->u, hit->v);
+    RTCRayN_tfar(rays, args->N, 0) = to_float(hit->t);
+    RTCHitN_Ng_x(hits, args->N, 0) = to_float(normal[0]);
+    RTCHitN_Ng_y(hits, args->N, 0) = to_float(normal[1]);
+    RTCHitN_Ng_z(hits, args->N, 0) = to_float(normal[2]);
+    RTCHitN_u(hits, args->N, 0) = to_float(hit->u);
+    RTCHitN_v(hits, args->N, 0) = to_float(hit->v);
+    RTCHitN_primID(hits, args->N, 0) = args->primID;
+    RTCHitN_geomID(hits, args->N, 0) = args->geomID;
+    RTCHitN_instID(hits, args->N, 0, 0) = args->context->instID[0];
+  }
+
+  static void occluded_piece_callback(const RTCOccludedFunctionNArguments* args) {
+    if (!args->valid[0]) return;
+    const auto& impl = *static_cast<const Impl*>(args->geometryUserPtr);
+    const auto& context = *reinterpret_cast<const PatchContext*>(args->context);
+    if (impl.piece_hit(args->primID, callback_ray(context, args->ray, args->N)))
+      RTCRayN_tfar(args->ray, args->N, 0) = -std::numeric_limits<float>::infinity();
+  }
+
   // refines Embree's single-precision hit against the exact surface in double precision.
-  Hit refine(const Ray& ray, const RTCRayHit& query) const {
+  Hit refine(const Ray& ray, const RTCRayHit& query, const PatchHit& patch_hit) const {
     Hit hit{};
     double t = query.ray.tfar;
+    if (query.hit.geomID == patch_geometry) {
+      // The callback intersected the patch in double precision already.
+      const std::size_t patch = pieces[query.hit.primID].patch;
+      hit.object = patch_objects[patch];
+      hit.face = -1;
+      hit.distance = patch_hit.t;
+      hit.point = ray.origin + patch_hit.t * ray.direction;
+      hit.normal = patches[patch].normal(patch_hit.u, patch_hit.v);
+      return hit;
+    }
     if (query.hit.geomID == sphere_geometry) {
       hit.object = sphere_objects[query.hit.primID];
       hit.face = -1;
@@ -120,7 +205,8 @@ struct EmbreeScene::Impl {
   }
 };
 
-EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
+EmbreeScene::EmbreeScene(const Scene& scene, PatchSurfaces surfaces)
+    : impl_(std::make_unique<Impl>()) {
   Impl& impl = *impl_;
   impl.device = rtcNewDevice(nullptr);
   if (!impl.device) throw std::runtime_error("cannot create an Embree device");
@@ -136,6 +222,7 @@ EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   Vec3d low{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
             std::numeric_limits<double>::infinity()};
   Vec3d high = -low;
+  std::vector<const void*> patch_sets;  // the patch lists entered (pieces of one part share one)
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const Object& object = scene.objects[o];
     std::vector<FacePlane> planes;
@@ -161,6 +248,25 @@ EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     for (int k = 0; k < 3; ++k) {
       low[k] = std::min(low[k], box_low[k]);
       high[k] = std::max(high[k], box_high[k]);
+    }
+    if (object.patches && surfaces == PatchSurfaces::exact) {
+      // The pieces of a patch object's tessellation all carry its patches: enter them once,
+      // reported as the first piece.
+      if (std::find(patch_sets.begin(), patch_sets.end(), object.patches.get()) != patch_sets.end())
+        continue;
+      patch_sets.push_back(object.patches.get());
+      for (const BezierPatch& patch : *object.patches) {
+        const std::vector<PatchPiece> pieces = flat_pieces(patch, impl.patches.size());
+        impl.pieces.insert(impl.pieces.end(), pieces.begin(), pieces.end());
+        impl.patches.push_back(patch);
+        impl.patch_objects.push_back(static_cast<std::uint32_t>(o));
+        const auto [patch_low, patch_high] = patch.bounds();
+        for (int k = 0; k < 3; ++k) {
+          low[k] = std::min(low[k], patch_low[k]);
+          high[k] = std::max(high[k], patch_high[k]);
+        }
+      }
+      continue;
     }
     const std::size_t face_count = object.solid.is_flat() ? 1 : object.solid.faces().size();
     for (std::size_t f = 0; f < face_count; ++f) {
@@ -202,6 +308,17 @@ EmbreeScene::EmbreeScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     impl.sphere_geometry = rtcAttachGeometry(impl.scene, geometry);
     rtcReleaseGeometry(geometry);
   }
+  if (!impl.pieces.empty()) {
+    RTCGeometry geometry = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(impl.pieces.size()));
+    rtcSetGeometryUserData(geometry, &impl);
+    rtcSetGeometryBoundsFunction(geometry, &Impl::piece_bounds, &impl);
+    rtcSetGeometryIntersectFunction(geometry, &Impl::intersect_piece_callback);
+    rtcSetGeometryOccludedFunction(geometry, &Impl::occluded_piece_callback);
+    rtcCommitGeometry(geometry);
+    impl.patch_geometry = rtcAttachGeometry(impl.scene, geometry);
+    rtcReleaseGeometry(geometry);
+  }
   rtcCommitScene(impl.scene);
   impl.check("building the scene");
 }
@@ -211,30 +328,27 @@ EmbreeScene::EmbreeScene(EmbreeScene&&) noexcept = default;
 EmbreeScene& EmbreeScene::operator=(EmbreeScene&&) noexcept = default;
 
 std::optional<Hit> EmbreeScene::intersect(const Ray& ray) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  PatchContext context(&ray);
   RTCRayHit query = embree_ray(ray);
-  rtcIntersect1(impl_->scene, &context, &query);
+  rtcIntersect1(impl_->scene, &context.context, &query);
   if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  return impl_->refine(ray, query);
+  return impl_->refine(ray, query, context.patch_hit);
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  PatchContext context(&ray);
   RTCRay query = embree_ray(ray).ray;
-  rtcOccluded1(impl_->scene, &context, &query);
+  rtcOccluded1(impl_->scene, &context.context, &query);
   // Embree marks an occluded ray by setting tfar to -infinity.
   return query.tfar < 0;
 }
 
 std::size_t EmbreeScene::traverse(const std::vector<Ray>& rays) const {
   std::size_t hits = 0;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
   for (const Ray& ray : rays) {
+    PatchContext context(&ray);
     RTCRayHit query = embree_ray(ray);
-    rtcIntersect1(impl_->scene, &context, &query);
+    rtcIntersect1(impl_->scene, &context.context, &query);
     if (query.hit.geomID != RTC_INVALID_GEOMETRY_ID) ++hits;
   }
   return hits;

@@ -46,7 +46,7 @@ struct RayTracer::Impl {
 
   Impl(const Scene& scene_in, TraceOptions options_in)
       : scene(scene_in),
-        embree(scene_in),
+        embree(scene_in, options_in.patches),
         options(options_in),
         tubes(scene_in, options_in.min_weight) {
     for (const Object& object : scene.objects)

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "bezier_objects.h"
 #include "json_cursor.h"
 #include "mesh_parts.h"
 #include "penumbra/base/input_error.h"
@@ -21,6 +22,8 @@ namespace {
 using detail::JsonCursor;
 
 constexpr int kDefaultSphereSegments = 16;
+// The default distance (m) within which the tessellation of a Bézier patch object lies.
+constexpr double kBezierTolerance = 1e-3;
 
 std::vector<Point3> exact_points(const std::vector<Vec3d>& points) {
   std::vector<Point3> result;
@@ -162,7 +165,8 @@ class SceneReader {
 
   void read_object(const JsonCursor& cursor) {
     cursor.require_object();
-    static const char* kinds[] = {"box", "convex", "polygon", "mesh", "sphere"};
+    static const char* kinds[] = {"box",    "convex", "polygon",       "mesh",
+                                  "sphere", "bezier", "bezier_patches"};
     std::string kind;
     for (const char* k : kinds) {
       if (!cursor.has(k)) continue;
@@ -171,9 +175,14 @@ class SceneReader {
       kind = k;
     }
     if (kind.empty())
-      cursor.fail("an object needs one of \"box\", \"convex\", \"polygon\", \"mesh\", \"sphere\"");
+      cursor.fail(
+          "an object needs one of \"box\", \"convex\", \"polygon\", \"mesh\", \"sphere\", "
+          "\"bezier\", \"bezier_patches\"");
     if (kind == "mesh")
       cursor.warn_unknown_keys({"name", "material", "mesh", "up", "scale", "transform", "snap"});
+    else if (kind == "bezier" || kind == "bezier_patches")
+      cursor.warn_unknown_keys(
+          {"name", "material", kind.c_str(), "tolerance", "up", "scale", "transform", "snap"});
     else
       cursor.warn_unknown_keys(
           {"name", "material", "box", "convex", "polygon", "mesh", "sphere", "segments"});
@@ -224,8 +233,11 @@ class SceneReader {
             exact_points(detail::sphere_points(sphere.center, sphere.radius, sphere.segments)));
       });
       object.sphere = sphere;
-    } else {
+    } else if (kind == "mesh") {
       read_mesh_object(cursor, shape, std::move(object));
+      return;
+    } else {
+      read_bezier_object(cursor, shape, std::move(object));
       return;
     }
     scene_.objects.push_back(std::move(object));
@@ -291,6 +303,60 @@ class SceneReader {
       }
       detail::add_mesh_part(scene_, base, part, std::move(parts[k]));
     }
+  }
+
+  // reads an object of Bézier patches (docs/bezier-patches.md): the patches, placed, kept
+  // for the ray tracer; their tessellation made into convex pieces for every other verb.
+  void read_bezier_object(const JsonCursor& cursor, const JsonCursor& shape, Object object) {
+    const Placement placement = read_placement(cursor);
+    const double tolerance =
+        cursor.has("tolerance") ? cursor.at("tolerance").positive_number() : kBezierTolerance;
+    std::vector<BezierPatch> patches;
+    object.kind = "bezier";
+    if (shape.value().is_string()) {
+      const std::filesystem::path path = scene_.file.parent_path() / shape.string();
+      try {
+        patches = detail::read_bezier_file(path);
+      } catch (const InputError& e) {
+        shape.fail(e.what());
+      }
+    } else {
+      // One patch as 16 points, or a list of patches.
+      const auto elements = shape.elements();
+      const bool one = !elements.empty() && elements[0].value().is_array() &&
+                       !elements[0].value().empty() && elements[0].value()[0].is_number();
+      const auto read_patch = [&](const JsonCursor& points) {
+        const std::vector<Vec3d> read = points.points(16);
+        if (read.size() != 16) points.fail("a bicubic patch has 16 control points");
+        BezierPatch patch;
+        std::copy(read.begin(), read.end(), patch.points.begin());
+        patches.push_back(patch);
+      };
+      if (one) {
+        read_patch(shape);
+      } else {
+        if (elements.empty()) shape.fail("a list of patches must not be empty");
+        for (const JsonCursor& element : elements) read_patch(element);
+      }
+    }
+    patches = detail::placed_patches(std::move(patches), placement);
+    detail::PatchTessellation tessellation =
+        detail::tessellate(patches, tolerance, placement.snap, object.name);
+    if (tessellation.part.faces.empty()) shape.fail("every patch is degenerate (no area)");
+    object.patches = std::make_shared<const std::vector<BezierPatch>>(std::move(patches));
+    TessellatedPatches record{object.name, object.json_path, object.patches->size(),
+                              tessellation.triangles, tolerance};
+    std::ostringstream note;
+    note << file_ << ": " << object.json_path << ": '" << object.name << "': " << record.patches
+         << " Bézier patches tessellated into " << record.triangles << " triangles within "
+         << tolerance
+         << " m; shadows, illuminance, render and radiosity use the tessellation (raytrace "
+            "intersects the patches)";
+    scene_.warnings.push_back(note.str());
+    scene_.tessellated.push_back(std::move(record));
+    detail::MeshPartObjects parts = detail::mesh_part_objects(
+        tessellation.part, shape.value().is_string() ? shape.string() : file_);
+    detail::add_mesh_part(scene_, object, tessellation.part, std::move(parts));
   }
 
   void read_light(const JsonCursor& cursor) {

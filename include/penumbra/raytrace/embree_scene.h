@@ -4,6 +4,8 @@
 // 3): a ray visits only the boxes it crosses instead of testing every object's sphere.
 // Embree traverses in single precision; each hit is refined in double precision against the
 // exact face plane or the exact sphere, so hit points lie on the surface to double rounding.
+// Bézier patches enter as user geometry, one primitive per flat piece, intersected in double
+// precision (bezier_intersection.h); or, where the caller asks, as their tessellation.
 
 #include <array>
 #include <cstddef>
@@ -32,7 +34,7 @@ struct Hit {
   double distance;     // t along the (unit) direction
   Vec3d point;         // origin + distance * direction, on the surface
   std::size_t object;  // index into Scene::objects
-  int face;            // index into the object's faces; -1 on an exact sphere
+  int face;            // index into the object's faces; -1 on an exact sphere or patch
   Vec3d normal;        // unit outward normal of the exact surface at point
 };
 
@@ -42,11 +44,17 @@ struct BoundingSphere {
   double radius;
 };
 
+// How objects made of Bézier patches enter: the patches themselves (the ray tracer), or
+// the planar pieces of their tessellation like other objects (form factors, whose patches
+// are faces of the tessellation).
+enum class PatchSurfaces { exact, tessellated };
+
 class EmbreeScene {
  public:
   // builds the hierarchy: every face of every object, fan-triangulated in single precision,
-  // and one exact sphere per sphere object. Two-sided polygons enter once.
-  explicit EmbreeScene(const Scene& scene);
+  // one exact sphere per sphere object, and the flat pieces of each Bézier patch (or its
+  // tessellation). Two-sided polygons enter once.
+  explicit EmbreeScene(const Scene& scene, PatchSurfaces patches = PatchSurfaces::exact);
   ~EmbreeScene();
   EmbreeScene(EmbreeScene&&) noexcept;
   EmbreeScene& operator=(EmbreeScene&&) noexcept;

@@ -40,6 +40,8 @@ struct TraceOptions {
   int tube_samples = 16;      // stratified elements per linear source and shading point for
                               // Phong's highlight (the diffuse term is exact, tube_visibility.h)
   std::uint64_t seed = 1980;  // the seed of every random choice (reproducible images)
+  // Bézier patch objects: the patches (Newton on the bicubic) or their tessellation
+  PatchSurfaces patches = PatchSurfaces::exact;
 };
 
 // Rays cast, by kind (Whitted's ray tree: camera, shadow, R and P rays).

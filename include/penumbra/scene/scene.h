@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "penumbra/base/colour.h"
+#include "penumbra/geometry/bezier_patch.h"
 #include "penumbra/geometry/convex_polyhedron.h"
 #include "penumbra/photometry/distribution.h"
 #include "penumbra/scene/camera.h"
@@ -47,7 +48,7 @@ constexpr std::size_t kNoMeshFace = static_cast<std::size_t>(-1);
 
 struct Object {
   std::string name;      // unique; a piece of a mesh face is "<part>#<k>"
-  std::string kind;      // "box", "convex", "polygon", "mesh" or "sphere"
+  std::string kind;      // "box", "convex", "polygon", "mesh", "sphere" or "bezier"
   std::size_t material;  // index into Scene::materials
   ConvexPolyhedron solid;
   std::optional<Sphere> sphere;
@@ -57,6 +58,9 @@ struct Object {
   // solid's face, which receives nothing). Empty for other objects.
   std::string part;
   std::vector<std::size_t> mesh_faces;
+  // the Bézier patches of a patch object (docs/bezier-patches.md), shared by the pieces of its
+  // tessellation: the ray tracer intersects these, every other verb sees the pieces.
+  std::shared_ptr<const std::vector<BezierPatch>> patches;
 
   // true when face f receives light: every face, but the inner sides of closed meshes.
   bool receives(std::size_t f) const { return mesh_faces.empty() || mesh_faces[f] != kNoMeshFace; }
@@ -78,6 +82,15 @@ struct MeshFace {
   Exact area;                              // in frame units
   // the pieces: (object, face of the object lying on this side), in the object order.
   std::vector<std::pair<std::size_t, std::size_t>> pieces;
+};
+
+// A patch object as the exact verbs see it: its tessellation, which documents mention.
+struct TessellatedPatches {
+  std::string name;       // the object's name (the part of its pieces)
+  std::string json_path;  // "objects[k]"
+  std::size_t patches = 0;
+  std::size_t triangles = 0;  // triangles of the tessellation, degenerate ones left out
+  double tolerance = 0;       // every triangle lies within this distance of its patch (m)
 };
 
 struct PointLight {
@@ -124,6 +137,7 @@ struct Scene {
   std::vector<Object> objects;
   std::vector<MeshFace> mesh_faces;  // the faces that the pieces among objects make up
   std::vector<Light> lights;
+  std::vector<TessellatedPatches> tessellated;  // the patch objects, in the object order
   std::vector<SunPlacement> suns;  // the lights given by place and time (above the horizon or not)
   double north_deg = 0;  // true north from the model's +Y, counter-clockwise seen from above
   std::optional<Camera> camera;
