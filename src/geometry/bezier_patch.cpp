@@ -36,14 +36,18 @@ Vec3d BezierPatch::point(double u, double v) const {
 BezierPatch::Jet BezierPatch::jet(double u, double v) const {
   const Basis bu(u), bv(v);
   Jet jet{};
-  for (int i = 0; i < 4; ++i)
+  for (int i = 0; i < 4; ++i) {
+    // Row i as a curve in v, and its slope; then the rows combined along u.
+    Vec3d row{}, row_slope{};
     for (int j = 0; j < 4; ++j) {
-      const Vec3d& p = at(i, j);
-      jet.point = jet.point + (bu.value[i] * bv.value[j]) * p;
-      jet.du = jet.du + (bu.slope[i] * bv.value[j]) * p;
-      jet.dv = jet.dv + (bu.value[i] * bv.slope[j]) * p;
-      jet.duv = jet.duv + (bu.slope[i] * bv.slope[j]) * p;
+      row = row + bv.value[j] * at(i, j);
+      row_slope = row_slope + bv.slope[j] * at(i, j);
     }
+    jet.point = jet.point + bu.value[i] * row;
+    jet.du = jet.du + bu.slope[i] * row;
+    jet.dv = jet.dv + bu.value[i] * row_slope;
+    jet.duv = jet.duv + bu.slope[i] * row_slope;
+  }
   return jet;
 }
 
