@@ -350,8 +350,8 @@ class SceneReader {
     note << file_ << ": " << object.json_path << ": '" << object.name << "': " << record.patches
          << " Bézier patches tessellated into " << record.triangles << " triangles within "
          << tolerance
-         << " m; shadows, illuminance, render and radiosity use the tessellation (raytrace "
-            "intersects the patches)";
+         << " m; every verb but raytrace uses the tessellation (raytrace intersects the "
+            "patches)";
     scene_.warnings.push_back(note.str());
     scene_.tessellated.push_back(std::move(record));
     detail::MeshPartObjects parts = detail::mesh_part_objects(

@@ -89,7 +89,7 @@ BOOST_AUTO_TEST_CASE(every_verb_runs_and_the_exact_ones_name_the_tessellation) {
   const auto out = [&](const std::string& name) { return "'" + (dir / name).string() + "'"; };
   const auto shadows = run_penumbra("shadows " + s + " -o " + out("loops.json"));
   BOOST_TEST_REQUIRE(shadows.status == 0, shadows.err);
-  BOOST_TEST(shadows.err.find("shadows, illuminance, render and radiosity use the tessellation") !=
+  BOOST_TEST(shadows.err.find("every verb but raytrace uses the tessellation") !=
              std::string::npos);
   const nlohmann::json document = nlohmann::json::parse(std::ifstream(dir / "loops.json"));
   const penumbra::Scene loaded = penumbra::load_scene(scene);
@@ -142,6 +142,22 @@ BOOST_AUTO_TEST_CASE(every_verb_runs_and_the_exact_ones_name_the_tessellation) {
                                          << near_edge);
   BOOST_TEST(inside > 500);
   BOOST_TEST(outside > 500);
+}
+
+BOOST_AUTO_TEST_CASE(a_bad_patch_file_exits_2_naming_file_and_line_and_writes_nothing) {
+  const auto dir = penumbra::test::scratch_dir("bezier-bad-cli");
+  std::ofstream(dir / "bad.bpt") << "1\n3 3\n0 0 0\n0 1 x\n";
+  std::ofstream(dir / "scene.json")
+      << R"({"penumbra": 1, "objects": [{"name": "pot", "bezier_patches": "bad.bpt"}],
+             "camera": {"eye": [3, 3, 3], "target": [0, 0, 0], "width": 8, "height": 8}})";
+  const auto result = run_penumbra("raytrace '" + (dir / "scene.json").string() + "' -o '" +
+                                   (dir / "x.png").string() + "'");
+  BOOST_TEST(result.status == 2);
+  BOOST_TEST(result.err.find("scene.json: objects[0].bezier_patches") != std::string::npos,
+             result.err);
+  BOOST_TEST(result.err.find("bad.bpt: line 4: \"x\" is not a finite number") != std::string::npos,
+             result.err);
+  BOOST_TEST(!std::filesystem::exists(dir / "x.png"));
 }
 
 BOOST_AUTO_TEST_SUITE_END()
