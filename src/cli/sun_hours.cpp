@@ -3,11 +3,15 @@
 // area with at least H hours per face as CSV, heat maps, and the area of a region that
 // reaches a threshold.
 
+#include <CGAL/Polygon_2.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <variant>
@@ -96,6 +100,63 @@ std::string area_share(double reached, double total) {
   return text;
 }
 
+// returns the plan polygon a --region "x,y x,y x,y ..." gives (points apart by spaces or
+// semicolons), or {} when the text is not one (it names objects then).
+std::optional<std::vector<Point2>> plan_polygon(const std::string& text) {
+  std::string spaced = text;
+  std::replace(spaced.begin(), spaced.end(), ';', ' ');
+  std::istringstream in(spaced);
+  std::vector<Point2> points;
+  for (std::string token; in >> token;) {
+    const std::size_t comma = token.find(',');
+    if (comma == std::string::npos || token.find(',', comma + 1) != std::string::npos)
+      return std::nullopt;
+    double xy[2];
+    const std::string parts[2] = {token.substr(0, comma), token.substr(comma + 1)};
+    for (int k = 0; k < 2; ++k) {
+      std::size_t used = 0;
+      try {
+        xy[k] = std::stod(parts[k], &used);
+      } catch (const std::exception&) {
+        return std::nullopt;
+      }
+      if (used != parts[k].size()) return std::nullopt;
+      if (!std::isfinite(xy[k]))
+        throw InputError("", "--region", "the plan polygon's coordinates must be finite");
+    }
+    points.emplace_back(xy[0], xy[1]);
+  }
+  if (points.size() < 2) return std::nullopt;
+  const CGAL::Polygon_2<Kernel> polygon(points.begin(), points.end());
+  if (points.size() < 3 || !polygon.is_simple() || CGAL::is_zero(polygon.area()))
+    throw InputError("", "--region",
+                     "a plan polygon is at least 3 points x,y that enclose an area without "
+                     "crossing or repeating, found '" +
+                         text + "'");
+  return points;
+}
+
+// prints the area of a plan region on the faces facing up that gets at least threshold of
+// sun, then the same for each of those faces.
+void report_plan_threshold(const Scene& scene, const studies::SunHoursResult& result,
+                           const std::vector<Point2>& plan, sun::Duration threshold) {
+  double total = 0, reached = 0;
+  std::ostringstream faces;
+  for (const studies::PlanShare& share :
+       studies::plan_region_shares(scene, result, plan, threshold)) {
+    const ReceivingFace face = receiving_face(scene, result.faces, share.receiver);
+    const double area = io::world_area(share.area, face.frame);
+    const double lit = io::world_area(share.reached, face.frame);
+    total += area;
+    reached += lit;
+    faces << "  " << face.object << " face " << face.face << ": " << area_share(lit, area) << "\n";
+  }
+  const double minutes = std::chrono::duration<double, std::ratio<60>>(threshold).count();
+  std::cout << "region plan polygon of " << plan.size() << " points: " << area_share(reached, total)
+            << " gets at least " << minutes / 60 << " h of direct sun\n"
+            << faces.str();
+}
+
 // prints the area of the region's faces that gets at least threshold of sun, then the
 // same for each of its faces (a garden modelled as a box is its top face).
 void report_threshold(const Scene& scene, const studies::SunHoursResult& result,
@@ -128,7 +189,7 @@ int run_sun_hours(const SunHoursArguments& arguments) {
     std::cerr << "penumbra: warning: " << warning << "\n";
   const SunPlacement sun = study_sun(scene, arguments);
   if (!arguments.threshold.empty() && arguments.region.empty())
-    throw InputError("", "--threshold", "needs --region NAME[,NAME...]");
+    throw InputError("", "--threshold", "needs --region NAME[,NAME...] or --region 'x,y x,y x,y'");
   if (arguments.threshold.empty() && !arguments.region.empty())
     throw InputError("", "--region", "needs --threshold, e.g. 2h");
 
@@ -155,7 +216,8 @@ int run_sun_hours(const SunHoursArguments& arguments) {
   if (!arguments.threshold.empty())
     threshold = sun::parse_step(arguments.threshold, {"", "--threshold"});
   std::vector<std::size_t> region_objects;
-  if (threshold) region_objects = select_objects(scene, arguments.region, "--region");
+  const std::optional<std::vector<Point2>> plan = plan_polygon(arguments.region);
+  if (threshold && !plan) region_objects = select_objects(scene, arguments.region, "--region");
 
   studies::SunHoursOptions options;
   if (!arguments.receivers.empty())
@@ -208,7 +270,9 @@ int run_sun_hours(const SunHoursArguments& arguments) {
                      [&](std::ostream& out) { io::write_sun_hours_svg(out, document, *view); });
   }
   if (!arguments.png.empty()) io::write_sun_hours_png(arguments.png, document, arguments.png_width);
-  if (threshold) report_threshold(scene, result, region_objects, *threshold, arguments.region);
+  if (threshold && plan) report_plan_threshold(scene, result, *plan, *threshold);
+  if (threshold && !plan)
+    report_threshold(scene, result, region_objects, *threshold, arguments.region);
   if (arguments.stats)
     std::cerr << "steps " << result.steps.size() << " (" << up << " with the sun up), faces "
               << result.faces.receivers.size() << "; time: shadows " << result.shadow_seconds
@@ -259,7 +323,9 @@ void register_sun_hours(CLI::App& app) {
                    "with --region: print the area of the region with at least this much sun "
                    "(e.g. 2h, 90min)");
   verb->add_option("--region", arguments->region,
-                   "the objects whose faces make the region: NAME[,NAME...], shell patterns");
+                   "the region: the objects whose faces make it (NAME[,NAME...], shell "
+                   "patterns), or a polygon of the site plan 'x,y x,y x,y ...' on the faces "
+                   "facing up");
   verb->add_flag("--stats", arguments->stats, "print steps, faces and time per stage on stderr");
   verb->callback([arguments] { exit_status() = run_sun_hours(*arguments); });
 }

@@ -211,17 +211,29 @@ ClusterParts overlay_cluster(const std::vector<Piece>& cluster) {
   return parts;
 }
 
+// returns the polygons of the faces of the overlay of layers whose count is count.
+Region2 region_counting(const std::vector<Layer>& layers, long count) {
+  const std::unique_ptr<Arrangement> all = overlay(layers);
+  return canonical_region(
+      std::move(polygons_by_key(*all, [count](long data) { return data == count ? 0 : -1; })[0]));
+}
+
 // returns window less the polygons of extents (disjoint): the faces of the window's and the
 // extents' overlay that lie in the window only.
 Region2 window_less(const Polygon2& window, const std::vector<Polygon2>& extents) {
   std::vector<Layer> layers{{{&window}, 2}, {{}, 1}};
   for (const Polygon2& polygon : extents) layers.back().polygons.push_back(&polygon);
-  const std::unique_ptr<Arrangement> all = overlay(layers);
-  return canonical_region(
-      std::move(polygons_by_key(*all, [](long data) { return data == 2 ? 0 : -1; })[0]));
+  return region_counting(layers, 2);
 }
 
 }  // namespace
+
+Region2 intersection(const Region2& a, const Region2& b) {
+  std::vector<Layer> layers{{{}, 1}, {{}, 2}};
+  for (const Polygon2& polygon : a.polygons) layers[0].polygons.push_back(&polygon);
+  for (const Polygon2& polygon : b.polygons) layers[1].polygons.push_back(&polygon);
+  return region_counting(layers, 3);
+}
 
 std::vector<Coverage> coverage(const Polygon2& window, const std::vector<const Region2*>& regions,
                                std::size_t base) {

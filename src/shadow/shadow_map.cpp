@@ -437,10 +437,15 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   std::sort(lights.begin(), lights.end(), [&](std::size_t a, std::size_t b) {
     return scene.lights[a].name < scene.lights[b].name;
   });
-  for (std::size_t light : lights)
-    result.lights.push_back(position_of(scene.lights[light])
-                                ? shade_scene(scene, result.receivers, rank, light, options)
-                                : shade_linear(scene, result.receivers, rank, light, options));
+  // The lights are independent: computed side by side (each also parallel across faces),
+  // which is what keeps both cores busy through the many suns of a sun study.
+  result.lights.resize(lights.size());
+  for_each_index(lights.size(), options.parallel && lights.size() > 1, [&](std::size_t k) {
+    const std::size_t light = lights[k];
+    result.lights[k] = position_of(scene.lights[light])
+                           ? shade_scene(scene, result.receivers, rank, light, options)
+                           : shade_linear(scene, result.receivers, rank, light, options);
+  });
   if (options.unite_mesh_faces && !scene.mesh_faces.empty()) unite_mesh_faces(scene, rank, result);
   return result;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <string>
 #include <utility>
 
 #include "penumbra/base/parallel.h"
@@ -10,6 +11,8 @@ namespace penumbra::studies {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+constexpr std::size_t kStepsAtOnce = 8;  // sun-up steps computed side by side
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -89,22 +92,37 @@ SunHoursResult sun_hours(const Scene& scene, const SunPlacement& sun,
 
   const Clock::time_point shading = Clock::now();
   std::vector<FaceSteps> faces(count);
-  for (const SunStep& s : result.steps) {
-    if (!s.up()) continue;
-    stepped.lights = {
-        Light{sun.name, DirectionalLight{s.direction, sun.illuminance}, sun.json_path}};
+  std::vector<std::size_t> up;
+  for (std::size_t k = 0; k < result.steps.size(); ++k)
+    if (result.steps[k].up()) up.push_back(k);
+  // The steps in batches, each batch's suns the lights of one computation, so that steps
+  // are computed side by side (compute_shadows runs its lights in parallel); the batch
+  // bounds the shadows held at once beyond those kept for the overlay.
+  for (std::size_t first = 0; first < up.size(); first += kStepsAtOnce) {
+    const std::size_t last = std::min(up.size(), first + kStepsAtOnce);
+    stepped.lights.clear();
+    for (std::size_t k = first; k < last; ++k) {
+      // Names in step order: the lights come back in name order.
+      std::string number = std::to_string(k);
+      number.insert(0, 8 - std::min<std::size_t>(8, number.size()), '0');
+      stepped.lights.push_back(
+          Light{sun.name + "@" + number,
+                DirectionalLight{result.steps[up[k]].direction, sun.illuminance}, sun.json_path});
+    }
     ShadowResult shadows = compute_shadows(stepped, shadow_options);
     for (std::string& warning : shadows.warnings)
       if (std::find(result.faces.warnings.begin(), result.faces.warnings.end(), warning) ==
           result.faces.warnings.end())
         result.faces.warnings.push_back(std::move(warning));
-    std::vector<FaceShadow>& lit = shadows.lights.front().faces;
-    for (std::size_t r = 0; r < count; ++r) {
-      if (lit[r].faces_away) continue;
-      ++faces[r].facing;
-      if (!lit[r].shadow.empty()) faces[r].shadows.push_back(std::move(lit[r].shadow));
+    for (LightShadows& step : shadows.lights) {
+      std::vector<FaceShadow>& lit = step.faces;
+      for (std::size_t r = 0; r < count; ++r) {
+        if (lit[r].faces_away) continue;
+        ++faces[r].facing;
+        if (!lit[r].shadow.empty()) faces[r].shadows.push_back(std::move(lit[r].shadow));
+      }
+      if (options.step_done) options.step_done();
     }
-    if (options.step_done) options.step_done();
   }
   result.shadow_seconds = seconds_since(shading);
 
@@ -128,6 +146,32 @@ SunHoursResult sun_hours(const Scene& scene, const SunPlacement& sun,
   });
   result.overlay_seconds = seconds_since(overlaying);
   return result;
+}
+
+std::vector<PlanShare> plan_region_shares(const Scene& scene, const SunHoursResult& result,
+                                          const std::vector<Point2>& plan,
+                                          sun::Duration threshold) {
+  std::vector<PlanShare> shares;
+  for (std::size_t r = 0; r < result.faces.receivers.size(); ++r) {
+    const ReceivingFace face = receiving_face(scene, result.faces, r);
+    const Plane3& plane = face.plane;
+    if (!CGAL::is_positive(plane.c())) continue;
+    // The plan point (x, y) on the plane a x + b y + c z + d = 0, in the face's frame.
+    Ring2 ring;
+    for (const Point2& p : plan)
+      ring.push_back(face.frame.to_frame(
+          Point3(p.x(), p.y(), -(plane.a() * p.x() + plane.b() * p.y() + plane.d()) / plane.c())));
+    if (CGAL::is_negative(signed_area(ring))) std::reverse(ring.begin(), ring.end());
+    const Region2 prism = canonical_region({Polygon2{canonical_ring(ring), {}}});
+    const Region2 inside = intersection(canonical_region({window_of(face)}), prism);
+    if (inside.empty()) continue;
+    PlanShare share{r, inside.area, 0};
+    for (const Coverage& part : result.hours[r].parts)
+      if (result.step * static_cast<long long>(part.count) >= threshold)
+        share.reached += intersection(part.region, prism).area;
+    shares.push_back(std::move(share));
+  }
+  return shares;
 }
 
 }  // namespace penumbra::studies

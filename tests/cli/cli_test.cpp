@@ -160,13 +160,24 @@ BOOST_AUTO_TEST_CASE(sun_hours_writes_its_documents_and_answers_the_threshold) {
   top << "  ground face 3: " << std::setprecision(6) << std::stod(csv.at("area_ge_2h")[3]) << " m2";
   BOOST_TEST(csv.at("object")[3] == "ground");
   BOOST_TEST(contains(threshold.out, top.str()), threshold.out);
+  // A plan polygon over the ground's extent, [-20, 20]^2: the same top face, and the faces
+  // facing up inside it (the roofs of the tower and the pavilion).
+  const auto plan = run_penumbra(
+      "sun-hours fixtures/scenes/sun-london.json --step 1h --threshold 2h --region "
+      "'-20,-20 20,-20 20,20 -20,20'");
+  BOOST_TEST_REQUIRE(plan.status == 0, plan.err);
+  BOOST_TEST(contains(plan.out, "region plan polygon of 4 points: "), plan.out);
+  BOOST_TEST(contains(plan.out, top.str()), plan.out);
+  BOOST_TEST(contains(plan.out, "  tower face 3: "), plan.out);
+  BOOST_TEST(!contains(plan.out, "ground face 0"), plan.out);  // vertical: no plan area
 
   // Bad input: exit 2, nothing written.
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   for (const char* bad :
        {"--date 2026-13-01", "--step 0min", "--threshold 2h", "--region ground",
-        "--date 2026-03-22 --to 2026-03-21", "--threshold 2h --region nothing", "--light moon"}) {
+        "--date 2026-03-22 --to 2026-03-21", "--threshold 2h --region nothing", "--light moon",
+        "--threshold 2h --region '0,0 1,1 0,1 1,0'", "--threshold 2h --region '0,0 1,1'"}) {
     const auto failed =
         run_penumbra(std::string("sun-hours fixtures/scenes/sun-london.json ") + bad + files);
     BOOST_TEST(failed.status == 2, bad);

@@ -98,4 +98,37 @@ BOOST_AUTO_TEST_CASE(no_regions_leave_the_window_whole_with_the_base_count) {
   BOOST_TEST((parts.front().region == canonical_region({window})));
 }
 
+BOOST_AUTO_TEST_CASE(an_intersection_holds_the_points_both_regions_hold) {
+  // Unions of random triangles (one less a hole) intersected pairwise: at random rational
+  // points, inside the intersection exactly when strictly inside both; its area is that of
+  // the part of the window [0, 12]^2 that both cover in the overlay of the two (coverage),
+  // and the same either way round.
+  const Polygon2 window{canonical_ring(square(0, 0, 12, 12)), {}};
+  std::mt19937 random(23);
+  for (int trial = 0; trial < 10; ++trial) {
+    std::vector<Ring2> first, second;
+    for (int t = 0; t < 1 + trial % 3; ++t) first.push_back(random_triangle(random));
+    for (int t = 0; t < 1 + (trial / 3) % 3; ++t) second.push_back(random_triangle(random));
+    const Region2 a = detail::unite_minus(first, {square(5, 5, 7, 7)});
+    const Region2 b = detail::unite_minus(second);
+    const Region2 both = intersection(a, b);
+    BOOST_TEST((both.area == intersection(b, a).area));
+    Exact covered_twice = 0;
+    for (const Coverage& part : coverage(window, {&a, &b}))
+      if (part.count == 2) covered_twice = part.region.area;
+    BOOST_TEST((both.area == covered_twice));
+    std::size_t compared = 0;
+    for (int s = 0; s < 300; ++s) {
+      const Point2 p(Exact(std::uniform_int_distribution<int>(1, 12 * 997 - 1)(random)) / 997,
+                     Exact(std::uniform_int_distribution<int>(1, 12 * 997 - 1)(random)) / 997);
+      const Where in_a = locate(a, p), in_b = locate(b, p);
+      if (in_a == Where::boundary || in_b == Where::boundary) continue;
+      const bool expected = in_a == Where::inside && in_b == Where::inside;
+      BOOST_TEST((locate(both, p) == Where::inside) == expected);
+      ++compared;
+    }
+    BOOST_TEST(compared > 250u);
+  }
+}
+
 BOOST_AUTO_TEST_SUITE_END()

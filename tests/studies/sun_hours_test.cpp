@@ -184,6 +184,84 @@ BOOST_AUTO_TEST_CASE(a_courtyard_gets_the_sun_derived_by_hand) {
   BOOST_TEST(always_from_parts == CGAL::to_double(always), boost::test_tools::tolerance(1e-12));
 }
 
+BOOST_AUTO_TEST_CASE(a_plan_region_takes_its_share_of_the_courtyard_and_a_roof) {
+  // The courtyard of the previous case; at each step the lit part of the floor is the
+  // rectangle [max(0, -a), min(w, w - a)] x [max(0, -b), min(w, w - b)] derived there. A plan
+  // region over the western half [-1, w/2] x [-1, w + 1] (reaching over the walls' feet,
+  // which it must ignore) holds w/2 x w of the floor, and the sum over the steps of the lit
+  // area inside it, derived from those rectangles cut at x = w/2, equals the sum over
+  // thresholds k = 1 .. up steps of the area with at least k steps of sun inside it (each
+  // part counted once per step it is lit). The walls' tops (facing up) take their own
+  // shares: the region's area is the plan area of what faces up inside it.
+  const int w = 10, h = 6, t = 2;
+  const std::string objects =
+      box("floor", {0, 0, -1}, {w, w, 0}) + ", " + box("west", {-t, -t, -1}, {0, w + t, h}) + ", " +
+      box("east", {w, -t, -1}, {w + t, w + t, h}) + ", " + box("south", {0, -t, -1}, {w, 0, h}) +
+      ", " + box("north", {0, w, -1}, {w, w + t, h}) +
+      R"(, {"name": "roof", "convex": [[20, 0, 0], [30, 0, 0], [20, 10, 0], [30, 10, 0],
+                                       [20, 0, 5], [30, 0, 5], [20, 5, 10], [30, 5, 10]]})";
+  const Scene scene = sun_scene(objects, 40.4, -3.7, "2026-06-21T12:00:00+02:00");
+  const studies::SunHoursResult result = hours_of(scene, "2026-06-21", "20min");
+  const Exact half = Exact(w) / 2;
+  Exact integral = 0;  // sum over the sun-up steps of the lit area west of x = w/2
+  std::size_t up = 0;
+  for (const studies::SunStep& step : result.steps) {
+    if (!step.up()) continue;
+    ++up;
+    const Vector3 s = -to_exact_vector(step.direction);
+    const Exact a = h * s.x() / s.z(), b = h * s.y() / s.z();
+    const Exact dx = CGAL::min(half, w - a) - CGAL::max(Exact(0), -a);
+    const Exact dy = CGAL::min(Exact(w), w - b) - CGAL::max(Exact(0), -b);
+    if (dx > 0 && dy > 0) integral += dx * dy;
+  }
+  const std::vector<Point2> west_half{{-1, -1}, {half, -1}, {half, w + 1}, {-1, w + 1}};
+  const auto floor_share = [&](sun::Duration threshold) {
+    for (const studies::PlanShare& share :
+         studies::plan_region_shares(scene, result, west_half, threshold))
+      if (scene.objects[result.faces.receivers[share.receiver].object].name == "floor")
+        return share;
+    return studies::PlanShare{result.faces.receivers.size(), -1, -1};
+  };
+  double from_shares = 0;
+  for (std::size_t k = 1; k <= up; ++k)
+    from_shares += world_area(face_of(scene, result, floor_share(result.step * k).receiver),
+                              floor_share(result.step * k).reached);
+  const auto tolerance = boost::test_tools::tolerance(1e-12);
+  BOOST_TEST(CGAL::to_double(integral) > 50.0);
+  BOOST_TEST(from_shares == CGAL::to_double(integral), tolerance);
+  const studies::PlanShare all = floor_share(sun::Duration(0));
+  BOOST_TEST_REQUIRE(all.receiver < result.faces.receivers.size());
+  BOOST_TEST(
+      world_area(face_of(scene, result, all.receiver), all.area) == CGAL::to_double(half * w),
+      tolerance);
+  BOOST_TEST(all.reached == all.area);
+  // The tops inside [-1, w/2] x [-1, w + 1]: west 1 x (w + 2), south and north each
+  // w/2 x 1; the east wall lies outside.
+  double tops = 0;
+  for (const studies::PlanShare& share :
+       studies::plan_region_shares(scene, result, west_half, sun::Duration(0))) {
+    const Face& face = face_of(scene, result, share.receiver);
+    BOOST_TEST(CGAL::is_positive(face.plane.c()));
+    if (scene.objects[result.faces.receivers[share.receiver].object].name != "floor")
+      tops += world_area(face, share.area);
+  }
+  BOOST_TEST(tops == CGAL::to_double(Exact(w + 2) + 2 * half), tolerance);
+
+  // The roof's slopes rise 5 over 5: over the plan square [22, 28] x [1, 4] (on the south
+  // slope only) the sloped area is the plan area times sqrt(2), in world units.
+  const std::vector<Point2> on_slope{{22, 1}, {28, 1}, {28, 4}, {22, 4}};
+  const auto shares = studies::plan_region_shares(scene, result, on_slope, sun::Duration(0));
+  BOOST_TEST_REQUIRE(shares.size() == 1u);
+  const Face& slope = face_of(scene, result, shares[0].receiver);
+  BOOST_TEST(world_area(slope, shares[0].area) == 18 * std::sqrt(2.0),
+             boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(shares[0].reached == shares[0].area);  // threshold 0: all of it
+  // A polygon beside everything meets nothing.
+  BOOST_TEST(
+      studies::plan_region_shares(scene, result, {{50, 50}, {51, 50}, {51, 51}}, sun::Duration(0))
+          .empty());
+}
+
 BOOST_AUTO_TEST_CASE(a_pole_on_the_equator_at_the_equinox_sees_the_sun_east_then_west) {
   // At the equator near the equinox the sun rises due east, passes nearly overhead and
   // sets due west: the pole's east face is lit whole at every sun-up step whose light

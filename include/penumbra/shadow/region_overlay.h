@@ -27,4 +27,8 @@ struct Coverage {
 std::vector<Coverage> coverage(const Polygon2& window, const std::vector<const Region2*>& regions,
                                std::size_t base = 0);
 
+// returns the points of a that lie in b (regions of one frame, canonical): the faces of
+// their overlay that both hold, exactly (sun-hours' plan regions, docs/sun-hours.md).
+Region2 intersection(const Region2& a, const Region2& b);
+
 }  // namespace penumbra

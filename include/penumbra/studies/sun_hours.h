@@ -40,7 +40,7 @@ std::vector<SunStep> sun_steps(const SunPlacement& sun, double north_deg,
 struct SunHoursOptions {
   // only these receiving faces, as ShadowOptions::receivers; every face when empty.
   std::optional<std::vector<Receiver>> receivers;
-  bool parallel = true;  // TBB across faces (shadows of a step, and the overlays)
+  bool parallel = true;  // TBB across steps and faces (the shadows), and faces (the overlays)
   // progress (each may be empty): step_done after each sun-up step's shadows;
   // overlays_begin before the overlays with the number of faces, then face_done after each
   // face's overlay, from any thread.
@@ -82,5 +82,21 @@ struct SunHoursResult {
 SunHoursResult sun_hours(const Scene& scene, const SunPlacement& sun,
                          const std::vector<sun::UtcInstant>& instants, sun::Duration step,
                          const SunHoursOptions& options = {});
+
+// The part of a plan region (a simple polygon of x, y seen from above: a garden, a
+// playground drawn on the site plan) on one receiving face that faces up (its normal has
+// z > 0; vertical and downward faces have no plan area): the region is the vertical prism
+// over the polygon.
+struct PlanShare {
+  std::size_t receiver;  // index into SunHoursResult::faces.receivers
+  Exact area;            // of the face inside the prism, in the face's frame units
+  Exact reached;         // of that, the area with at least the threshold of sun
+};
+
+// returns the shares of the faces of result that meet the prism over plan (counter-clockwise
+// or clockwise, at least 3 points, not crossing itself), exactly: each face's window and
+// its sun-hours parts intersected with the polygon carried onto the face's plane along z.
+std::vector<PlanShare> plan_region_shares(const Scene& scene, const SunHoursResult& result,
+                                          const std::vector<Point2>& plan, sun::Duration threshold);
 
 }  // namespace penumbra::studies
