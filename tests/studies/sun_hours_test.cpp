@@ -62,6 +62,25 @@ double world_area(const Face& face, const Exact& area) {
          std::sqrt(CGAL::to_double(face.frame.squared_u() * face.frame.squared_v()));
 }
 
+// A courtyard floor [0, w]^2 at z = 0 walled all round to height h by walls t thick.
+std::string courtyard(int w, int h, int t) {
+  return box("floor", {0, 0, -1}, {w, w, 0}) + ", " + box("west", {-t, -t, -1}, {0, w + t, h}) +
+         ", " + box("east", {w, -t, -1}, {w + t, w + t, h}) + ", " +
+         box("south", {0, -t, -1}, {w, 0, h}) + ", " + box("north", {0, w, -1}, {w, w + t, h});
+}
+
+// For each sun-up step, (a, b) = h (s_x, s_y) / s_z with s the direction toward the sun: the
+// shift from a floor point to where its ray toward the sun reaches the height h.
+std::vector<std::pair<Exact, Exact>> shifts_at(const studies::SunHoursResult& result, int h) {
+  std::vector<std::pair<Exact, Exact>> shifts;
+  for (const studies::SunStep& step : result.steps) {
+    if (!step.up()) continue;
+    const Vector3 s = -to_exact_vector(step.direction);
+    shifts.emplace_back(h * s.x() / s.z(), h * s.y() / s.z());
+  }
+  return shifts;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(sun_hours)
@@ -144,21 +163,15 @@ BOOST_AUTO_TEST_CASE(a_courtyard_gets_the_sun_derived_by_hand) {
   // The lit set is the rectangle [max(0, -a), min(w, w - a)] x [max(0, -b), min(w, w - b)],
   // of area (w - |a|)+ (w - |b|)+; the part lit at every step is the intersection of them.
   const int w = 10, h = 6, t = 2;
-  const std::string objects =
-      box("floor", {0, 0, -1}, {w, w, 0}) + ", " + box("west", {-t, -t, -1}, {0, w + t, h}) + ", " +
-      box("east", {w, -t, -1}, {w + t, w + t, h}) + ", " + box("south", {0, -t, -1}, {w, 0, h}) +
-      ", " + box("north", {0, w, -1}, {w, w + t, h});
+  const std::string objects = courtyard(w, h, t);
   const Scene scene = sun_scene(objects, 40.4, -3.7, "2026-06-21T12:00:00+02:00");
   const studies::SunHoursResult result = hours_of(scene, "2026-06-21", "20min");
 
   Exact integral = 0;  // sum over the sun-up steps of the lit area (m^2 steps)
   Exact x0 = 0, x1 = w, y0 = 0, y1 = w;
-  std::size_t up = 0;
-  for (const studies::SunStep& step : result.steps) {
-    if (!step.up()) continue;
-    ++up;
-    const Vector3 s = -to_exact_vector(step.direction);
-    const Exact a = h * s.x() / s.z(), b = h * s.y() / s.z();
+  const auto shifts = shifts_at(result, h);
+  const std::size_t up = shifts.size();
+  for (const auto& [a, b] : shifts) {
     const Exact dx = w - CGAL::abs(a), dy = w - CGAL::abs(b);
     if (dx > 0 && dy > 0) integral += dx * dy;
     x0 = CGAL::max(x0, -a), x1 = CGAL::min(x1, w - a);
@@ -195,21 +208,16 @@ BOOST_AUTO_TEST_CASE(a_plan_region_takes_its_share_of_the_courtyard_and_a_roof) 
   // shares: the region's area is the plan area of what faces up inside it.
   const int w = 10, h = 6, t = 2;
   const std::string objects =
-      box("floor", {0, 0, -1}, {w, w, 0}) + ", " + box("west", {-t, -t, -1}, {0, w + t, h}) + ", " +
-      box("east", {w, -t, -1}, {w + t, w + t, h}) + ", " + box("south", {0, -t, -1}, {w, 0, h}) +
-      ", " + box("north", {0, w, -1}, {w, w + t, h}) +
+      courtyard(w, h, t) +
       R"(, {"name": "roof", "convex": [[20, 0, 0], [30, 0, 0], [20, 10, 0], [30, 10, 0],
                                        [20, 0, 5], [30, 0, 5], [20, 5, 10], [30, 5, 10]]})";
   const Scene scene = sun_scene(objects, 40.4, -3.7, "2026-06-21T12:00:00+02:00");
   const studies::SunHoursResult result = hours_of(scene, "2026-06-21", "20min");
   const Exact half = Exact(w) / 2;
   Exact integral = 0;  // sum over the sun-up steps of the lit area west of x = w/2
-  std::size_t up = 0;
-  for (const studies::SunStep& step : result.steps) {
-    if (!step.up()) continue;
-    ++up;
-    const Vector3 s = -to_exact_vector(step.direction);
-    const Exact a = h * s.x() / s.z(), b = h * s.y() / s.z();
+  const auto shifts = shifts_at(result, h);
+  const std::size_t up = shifts.size();
+  for (const auto& [a, b] : shifts) {
     const Exact dx = CGAL::min(half, w - a) - CGAL::max(Exact(0), -a);
     const Exact dy = CGAL::min(Exact(w), w - b) - CGAL::max(Exact(0), -b);
     if (dx > 0 && dy > 0) integral += dx * dy;
