@@ -41,7 +41,7 @@ void write_values(const std::string& path, const Scene& scene,
         const std::size_t index = static_cast<std::size_t>(j) * image.width + i;
         const long object = image.objects[index];
         csv.integer(i).integer(j).text(
-            object >= 0 ? scene.objects[static_cast<std::size_t>(object)].name : "");
+            object >= 0 ? scene.objects[static_cast<std::size_t>(object)].face_owner() : "");
         for (double channel : image.pixels[index]) csv.number(channel);
         csv.end_row();
       }

@@ -48,19 +48,22 @@ std::vector<BezierPatch> read_bezier_file(const std::filesystem::path& path) {
   if (count < 1 || count != std::floor(count) || count > 1e6)
     throw InputError(path.string(), "line " + std::to_string(line_number),
                      "the number of patches must be a positive integer");
-  std::vector<BezierPatch> patches(static_cast<std::size_t>(count));
-  for (BezierPatch& patch : patches) {
+  // Read patch by patch: a count the file does not back allocates nothing large.
+  std::vector<BezierPatch> patches;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) {
     const std::vector<double> degrees = numbers(2, "the degrees \"3 3\"");
     if (degrees[0] != 3 || degrees[1] != 3)
       throw InputError(path.string(), "line " + std::to_string(line_number),
                        "only bicubic patches (degrees 3 3) are read");
+    BezierPatch patch;
     for (Vec3d& point : patch.points) {
       const std::vector<double> xyz = numbers(3, "a control point x y z");
       point = {xyz[0], xyz[1], xyz[2]};
     }
+    patches.push_back(patch);
   }
   std::string rest;
-  while (in >> rest)
+  if (in >> rest)
     throw InputError(path.string(), "line " + std::to_string(line_number + 1),
                      "unexpected content after the last patch");
   return patches;
@@ -85,11 +88,16 @@ std::vector<BezierPatch> placed_patches(std::vector<BezierPatch> patches,
   return patches;
 }
 
+int grid_segments(const std::vector<BezierPatch>& patches, double tolerance) {
+  int n = 1;
+  for (const BezierPatch& patch : patches) n = std::max(n, tessellation_segments(patch, tolerance));
+  return n;
+}
+
 PatchTessellation tessellate(const std::vector<BezierPatch>& patches, double tolerance, double snap,
                              const std::string& name) {
   PatchTessellation result;
-  for (const BezierPatch& patch : patches)
-    result.segments = std::max(result.segments, tessellation_segments(patch, tolerance));
+  result.segments = grid_segments(patches, tolerance);
   const int n = result.segments;
   // The snap grid's step: the largest power of two not above snap, as for models.
   double step = 0;

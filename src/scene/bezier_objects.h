@@ -32,6 +32,9 @@ struct PatchTessellation {
   int segments = 0;
   std::size_t triangles = 0;  // non-degenerate triangles
 };
+// returns the grid size n that tessellate uses for patches at tolerance.
+int grid_segments(const std::vector<BezierPatch>& patches, double tolerance);
+
 PatchTessellation tessellate(const std::vector<BezierPatch>& patches, double tolerance, double snap,
                              const std::string& name);
 

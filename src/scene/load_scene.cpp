@@ -24,6 +24,8 @@ using detail::JsonCursor;
 constexpr int kDefaultSphereSegments = 16;
 // The default distance (m) within which the tessellation of a Bézier patch object lies.
 constexpr double kBezierTolerance = 1e-3;
+// The most triangles the tessellation of one Bézier patch object may have.
+constexpr double kMaxBezierTriangles = 2e6;
 
 std::vector<Point3> exact_points(const std::vector<Vec3d>& points) {
   std::vector<Point3> result;
@@ -340,6 +342,14 @@ class SceneReader {
       }
     }
     patches = detail::placed_patches(std::move(patches), placement);
+    // Refuse a tessellation too large to build before building it.
+    const double segments = detail::grid_segments(patches, tolerance);
+    const double triangles = 2 * segments * segments * static_cast<double>(patches.size());
+    if (triangles > kMaxBezierTriangles)
+      (cursor.has("tolerance") ? cursor.at("tolerance") : shape)
+          .fail("the tessellation within " + std::to_string(tolerance) + " m would have " +
+                std::to_string(static_cast<long long>(triangles)) +
+                " triangles, more than the limit of 2000000: give a larger tolerance");
     detail::PatchTessellation tessellation =
         detail::tessellate(patches, tolerance, placement.snap, object.name);
     if (tessellation.part.faces.empty()) shape.fail("every patch is degenerate (no area)");

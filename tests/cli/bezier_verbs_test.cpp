@@ -100,11 +100,17 @@ BOOST_AUTO_TEST_CASE(every_verb_runs_and_the_exact_ones_name_the_tessellation) {
   BOOST_TEST(document["tessellated"][0]["tolerance"] == kTolerance);
   for (const std::string verb :
        {"illuminance " + s + " --workplane 0.01 --spacing 0.5 -o " + out("grid.csv"),
-        "render " + s + " -o " + out("render.png"), "raytrace " + s + " -o " + out("ray.png"),
+        "render " + s + " -o " + out("render.png"),
+        "raytrace " + s + " -o " + out("ray.png") + " --values " + out("ray.csv"),
         "radiosity " + s + " --patch-size 0.5 --rays 64 -o " + out("patches.csv")}) {
     const auto result = run_penumbra(verb);
     BOOST_TEST(result.status == 0, verb << ": " << result.err);
   }
+
+  // The values name the patch object, not a piece of its tessellation.
+  const std::string values = penumbra::test::read_text(dir / "ray.csv");
+  BOOST_TEST(values.find(",teapot,") != std::string::npos);
+  BOOST_TEST(values.find("teapot#") == std::string::npos);
 
   // The ground's top face and its shadow from the vertical sun.
   nlohmann::json shadow;

@@ -142,6 +142,11 @@ BOOST_AUTO_TEST_CASE(bad_patches_are_named_by_file_and_line_or_path) {
   expect_error(with_patch_file("good", "1\n" + flat_patch_text(0)),
                R"({"penumbra": 1, "objects": [{"bezier_patches": "p.bpt", "tolerance": 0}]})",
                "objects[0].tolerance", "");
+  // A tolerance so fine that the tessellation would be enormous is refused before it is made.
+  expect_error(dir,
+               R"({"penumbra": 1, "objects": [{"bezier_patches": ")" +
+                   test::fixture("meshes/teapot.bpt").string() + R"(", "tolerance": 1e-7}]})",
+               "objects[0].tolerance", "more than the limit of 2000000");
   // Every patch collapsed to a point: nothing to tessellate.
   std::string point;
   for (int k = 0; k < 16; ++k) point += std::string(k ? "," : "") + "[1,1,1]";
