@@ -342,14 +342,20 @@ class SceneReader {
       }
     }
     patches = detail::placed_patches(std::move(patches), placement);
+    for (const BezierPatch& patch : patches)
+      for (const Vec3d& p : patch.points)
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+          shape.fail("a control point is not finite once placed (scale or transform too large)");
     // Refuse a tessellation too large to build before building it.
     const double segments = detail::grid_segments(patches, tolerance);
     const double triangles = 2 * segments * segments * static_cast<double>(patches.size());
-    if (triangles > kMaxBezierTriangles)
-      (cursor.has("tolerance") ? cursor.at("tolerance") : shape)
-          .fail("the tessellation within " + std::to_string(tolerance) + " m would have " +
-                std::to_string(static_cast<long long>(triangles)) +
-                " triangles, more than the limit of 2000000: give a larger tolerance");
+    if (triangles > kMaxBezierTriangles) {
+      std::ostringstream message;
+      message << "the tessellation within " << tolerance << " m would have "
+              << static_cast<long long>(triangles)
+              << " triangles, more than the limit of 2000000: give a larger tolerance";
+      (cursor.has("tolerance") ? cursor.at("tolerance") : shape).fail(message.str());
+    }
     detail::PatchTessellation tessellation =
         detail::tessellate(patches, tolerance, placement.snap, object.name);
     if (tessellation.part.faces.empty()) shape.fail("every patch is degenerate (no area)");

@@ -146,7 +146,13 @@ BOOST_AUTO_TEST_CASE(bad_patches_are_named_by_file_and_line_or_path) {
   expect_error(dir,
                R"({"penumbra": 1, "objects": [{"bezier_patches": ")" +
                    test::fixture("meshes/teapot.bpt").string() + R"(", "tolerance": 1e-7}]})",
-               "objects[0].tolerance", "more than the limit of 2000000");
+               "objects[0].tolerance",
+               "within 1e-07 m would have 67108864 triangles, more than the limit of 2000000");
+  expect_error(dir,
+               R"({"penumbra": 1, "objects": [{"bezier_patches": ")" +
+                   test::fixture("meshes/teapot.bpt").string() + R"(", "scale": 1e300,
+                   "transform": [1e300,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]})",
+               "objects[0].bezier_patches", "a control point is not finite once placed");
   // Every patch collapsed to a point: nothing to tessellate.
   std::string point;
   for (int k = 0; k < 16; ++k) point += std::string(k ? "," : "") + "[1,1,1]";
