@@ -136,41 +136,33 @@ std::optional<std::vector<Point2>> plan_polygon(const std::string& text) {
   return points;
 }
 
-// prints the area of a plan region on the faces facing up that gets at least threshold of
-// sun, then the same for each of those faces.
-void report_plan_threshold(const Scene& scene, const studies::SunHoursResult& result,
-                           const std::vector<Point2>& plan, sun::Duration threshold) {
+// returns the shares of the faces of the named objects in a region: each face whole, and
+// its area with at least threshold of sun (a garden modelled as a box is its top face).
+std::vector<studies::RegionShare> object_shares(const Scene& scene,
+                                                const studies::SunHoursResult& result,
+                                                const std::vector<std::size_t>& objects,
+                                                sun::Duration threshold) {
+  std::vector<bool> chosen(scene.objects.size(), false);
+  for (std::size_t object : objects) chosen[object] = true;
+  std::vector<studies::RegionShare> shares;
+  for (std::size_t r = 0; r < result.faces.receivers.size(); ++r)
+    if (chosen[result.faces.receivers[r].object])
+      shares.push_back(
+          {r, receiving_face(scene, result.faces, r).area, result.area_at_least(r, threshold)});
+  return shares;
+}
+
+// prints the area of a region that gets at least threshold of sun, then the same for each
+// face it holds a share of.
+void report_threshold(const Scene& scene, const studies::SunHoursResult& result,
+                      const std::string& region, const std::vector<studies::RegionShare>& shares,
+                      sun::Duration threshold) {
   double total = 0, reached = 0;
   std::ostringstream faces;
-  for (const studies::PlanShare& share :
-       studies::plan_region_shares(scene, result, plan, threshold)) {
+  for (const studies::RegionShare& share : shares) {
     const ReceivingFace face = receiving_face(scene, result.faces, share.receiver);
     const double area = io::world_area(share.area, face.frame);
     const double lit = io::world_area(share.reached, face.frame);
-    total += area;
-    reached += lit;
-    faces << "  " << face.object << " face " << face.face << ": " << area_share(lit, area) << "\n";
-  }
-  const double minutes = std::chrono::duration<double, std::ratio<60>>(threshold).count();
-  std::cout << "region plan polygon of " << plan.size() << " points: " << area_share(reached, total)
-            << " gets at least " << minutes / 60 << " h of direct sun\n"
-            << faces.str();
-}
-
-// prints the area of the region's faces that gets at least threshold of sun, then the
-// same for each of its faces (a garden modelled as a box is its top face).
-void report_threshold(const Scene& scene, const studies::SunHoursResult& result,
-                      const std::vector<std::size_t>& objects, sun::Duration threshold,
-                      const std::string& region) {
-  std::vector<bool> chosen(scene.objects.size(), false);
-  for (std::size_t object : objects) chosen[object] = true;
-  double total = 0, reached = 0;
-  std::ostringstream faces;
-  for (std::size_t r = 0; r < result.faces.receivers.size(); ++r) {
-    if (!chosen[result.faces.receivers[r].object]) continue;
-    const ReceivingFace face = receiving_face(scene, result.faces, r);
-    const double area = io::world_area(face.area, face.frame);
-    const double lit = io::world_area(result.area_at_least(r, threshold), face.frame);
     total += area;
     reached += lit;
     faces << "  " << face.object << " face " << face.face << ": " << area_share(lit, area) << "\n";
@@ -270,9 +262,12 @@ int run_sun_hours(const SunHoursArguments& arguments) {
                      [&](std::ostream& out) { io::write_sun_hours_svg(out, document, *view); });
   }
   if (!arguments.png.empty()) io::write_sun_hours_png(arguments.png, document, arguments.png_width);
-  if (threshold && plan) report_plan_threshold(scene, result, *plan, *threshold);
+  if (threshold && plan)
+    report_threshold(scene, result, "plan polygon of " + std::to_string(plan->size()) + " points",
+                     studies::plan_region_shares(scene, result, *plan, *threshold), *threshold);
   if (threshold && !plan)
-    report_threshold(scene, result, region_objects, *threshold, arguments.region);
+    report_threshold(scene, result, arguments.region,
+                     object_shares(scene, result, region_objects, *threshold), *threshold);
   if (arguments.stats)
     std::cerr << "steps " << result.steps.size() << " (" << up << " with the sun up), faces "
               << result.faces.receivers.size() << "; time: shadows " << result.shadow_seconds

@@ -235,10 +235,4 @@ std::optional<PatchHit> intersect_patch(const BezierPatch& patch,
   return nearest;
 }
 
-PatchHit polish_hit(const BezierPatch& patch, const Ray& ray, PatchHit guess) {
-  const auto hit = newton(patch, ray, guess, 0, 1, 0, 1);
-  if (!hit) return guess;
-  return PatchHit{hit->t, std::clamp(hit->u, 0.0, 1.0), std::clamp(hit->v, 0.0, 1.0)};
-}
-
 }  // namespace penumbra::raytrace

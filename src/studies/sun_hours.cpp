@@ -148,10 +148,10 @@ SunHoursResult sun_hours(const Scene& scene, const SunPlacement& sun,
   return result;
 }
 
-std::vector<PlanShare> plan_region_shares(const Scene& scene, const SunHoursResult& result,
-                                          const std::vector<Point2>& plan,
-                                          sun::Duration threshold) {
-  std::vector<PlanShare> shares;
+std::vector<RegionShare> plan_region_shares(const Scene& scene, const SunHoursResult& result,
+                                            const std::vector<Point2>& plan,
+                                            sun::Duration threshold) {
+  std::vector<RegionShare> shares;
   for (std::size_t r = 0; r < result.faces.receivers.size(); ++r) {
     const ReceivingFace face = receiving_face(scene, result.faces, r);
     const Plane3& plane = face.plane;
@@ -165,7 +165,7 @@ std::vector<PlanShare> plan_region_shares(const Scene& scene, const SunHoursResu
     const Region2 prism = canonical_region({Polygon2{canonical_ring(ring), {}}});
     const Region2 inside = intersection(canonical_region({window_of(face)}), prism);
     if (inside.empty()) continue;
-    PlanShare share{r, inside.area, 0};
+    RegionShare share{r, inside.area, 0};
     for (const Coverage& part : result.hours[r].parts)
       if (result.step * static_cast<long long>(part.count) >= threshold)
         share.reached += intersection(part.region, prism).area;

@@ -224,11 +224,11 @@ BOOST_AUTO_TEST_CASE(a_plan_region_takes_its_share_of_the_courtyard_and_a_roof) 
   }
   const std::vector<Point2> west_half{{-1, -1}, {half, -1}, {half, w + 1}, {-1, w + 1}};
   const auto floor_share = [&](sun::Duration threshold) {
-    for (const studies::PlanShare& share :
+    for (const studies::RegionShare& share :
          studies::plan_region_shares(scene, result, west_half, threshold))
       if (scene.objects[result.faces.receivers[share.receiver].object].name == "floor")
         return share;
-    return studies::PlanShare{result.faces.receivers.size(), -1, -1};
+    return studies::RegionShare{result.faces.receivers.size(), -1, -1};
   };
   double from_shares = 0;
   for (std::size_t k = 1; k <= up; ++k)
@@ -237,7 +237,7 @@ BOOST_AUTO_TEST_CASE(a_plan_region_takes_its_share_of_the_courtyard_and_a_roof) 
   const auto tolerance = boost::test_tools::tolerance(1e-12);
   BOOST_TEST(CGAL::to_double(integral) > 50.0);
   BOOST_TEST(from_shares == CGAL::to_double(integral), tolerance);
-  const studies::PlanShare all = floor_share(sun::Duration(0));
+  const studies::RegionShare all = floor_share(sun::Duration(0));
   BOOST_TEST_REQUIRE(all.receiver < result.faces.receivers.size());
   BOOST_TEST(
       world_area(face_of(scene, result, all.receiver), all.area) == CGAL::to_double(half * w),
@@ -246,7 +246,7 @@ BOOST_AUTO_TEST_CASE(a_plan_region_takes_its_share_of_the_courtyard_and_a_roof) 
   // The tops inside [-1, w/2] x [-1, w + 1]: west 1 x (w + 2), south and north each
   // w/2 x 1; the east wall lies outside.
   double tops = 0;
-  for (const studies::PlanShare& share :
+  for (const studies::RegionShare& share :
        studies::plan_region_shares(scene, result, west_half, sun::Duration(0))) {
     const Face& face = face_of(scene, result, share.receiver);
     BOOST_TEST(CGAL::is_positive(face.plane.c()));

@@ -48,8 +48,4 @@ std::optional<PatchHit> intersect_piece(const BezierPatch& patch, const PatchPie
 std::optional<PatchHit> intersect_patch(const BezierPatch& patch,
                                         const std::vector<PatchPiece>& pieces, const Ray& ray);
 
-// refines a hit found at about (u, v, t) (Embree's single-precision report) to double
-// precision; returns the input when Newton's method does not converge.
-PatchHit polish_hit(const BezierPatch& patch, const Ray& ray, PatchHit guess);
-
 }  // namespace penumbra::raytrace

@@ -83,20 +83,22 @@ SunHoursResult sun_hours(const Scene& scene, const SunPlacement& sun,
                          const std::vector<sun::UtcInstant>& instants, sun::Duration step,
                          const SunHoursOptions& options = {});
 
-// The part of a plan region (a simple polygon of x, y seen from above: a garden, a
-// playground drawn on the site plan) on one receiving face that faces up (its normal has
-// z > 0; vertical and downward faces have no plan area): the region is the vertical prism
-// over the polygon.
-struct PlanShare {
+// A receiving face's share of a region: the area of the face the region holds, and the
+// part of it with at least a threshold of sun. For a plan region (a simple polygon of x, y
+// seen from above: a garden, a playground drawn on the site plan) the region is the
+// vertical prism over the polygon, met by the faces that face up (normal z > 0; vertical
+// and downward faces have no plan area).
+struct RegionShare {
   std::size_t receiver;  // index into SunHoursResult::faces.receivers
-  Exact area;            // of the face inside the prism, in the face's frame units
+  Exact area;            // of the face inside the region, in the face's frame units
   Exact reached;         // of that, the area with at least the threshold of sun
 };
 
 // returns the shares of the faces of result that meet the prism over plan (counter-clockwise
 // or clockwise, at least 3 points, not crossing itself), exactly: each face's window and
 // its sun-hours parts intersected with the polygon carried onto the face's plane along z.
-std::vector<PlanShare> plan_region_shares(const Scene& scene, const SunHoursResult& result,
-                                          const std::vector<Point2>& plan, sun::Duration threshold);
+std::vector<RegionShare> plan_region_shares(const Scene& scene, const SunHoursResult& result,
+                                            const std::vector<Point2>& plan,
+                                            sun::Duration threshold);
 
 }  // namespace penumbra::studies
