@@ -41,28 +41,13 @@ struct IlluminanceArguments {
 
 // === Reading the points file (header x,y,z,nx,ny,nz; columns found by name)
 
-// the tolerance on |normal| - 1: enough for normals written with four decimals
-// (0.7071, 0.7071 has length 0.99999); a longer or shorter vector is more likely a column
-// mix-up than a normal, so it is refused rather than silently rescaled.
-constexpr double kNormalLengthTolerance = 1e-3;
-
 std::vector<il::ReceivingPoint> read_points(const std::string& file) {
   std::vector<il::ReceivingPoint> receivers;
   for (const NumericRow& row :
        read_numeric_csv(file, {"x", "y", "z", "nx", "ny", "nz"}, "points file")) {
-    const std::vector<double>& value = row.values;
-    const std::string where = "line " + std::to_string(row.line);
-    il::ReceivingPoint receiver{{value[0], value[1], value[2]}, {value[3], value[4], value[5]}};
-    const double length =
-        std::sqrt(value[3] * value[3] + value[4] * value[4] + value[5] * value[5]);
-    if (length == 0)
-      throw InputError(file, where + ", columns nx,ny,nz", "the normal is the zero vector");
-    if (std::abs(length - 1) > kNormalLengthTolerance)
-      throw InputError(
-          file, where + ", columns nx,ny,nz",
-          "the normal has length " + std::to_string(length) + "; give a unit vector (within 1e-3)");
-    for (double& n : receiver.normal) n /= length;
-    receivers.push_back(receiver);
+    const std::vector<double>& v = row.values;
+    receivers.push_back(il::receiving_point({v[0], v[1], v[2], v[3], v[4], v[5]}, file,
+                                            "line " + std::to_string(row.line)));
   }
   return receivers;
 }

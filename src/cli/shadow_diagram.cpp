@@ -8,6 +8,7 @@
 #include "penumbra/io/shadow_diagram.h"
 #include "penumbra/io/shadow_json.h"
 #include "penumbra/studies/sun_hours.h"
+#include "penumbra/studies/sun_hours_request.h"
 #include "verbs.h"
 
 namespace penumbra::cli {
@@ -57,7 +58,7 @@ std::vector<sun::ZonedInstant> diagram_times(const std::string& text, int offset
 }  // namespace
 
 int run_shadow_diagram(const Scene& scene, const DiagramArguments& arguments) {
-  const SunPlacement& sun = choose_sun(scene, arguments.scene, arguments.light);
+  const SunPlacement& sun = studies::choose_sun(scene, arguments.scene, arguments.light);
   const std::vector<sun::ZonedInstant> times =
       diagram_times(arguments.times, sun.time.offset_minutes);
   std::vector<sun::UtcInstant> instants;

@@ -9,6 +9,7 @@
 #include "penumbra/base/atomic_file.h"
 #include "penumbra/base/csv.h"
 #include "penumbra/base/input_error.h"
+#include "penumbra/studies/sun_hours_request.h"
 #include "penumbra/sun/solar_position.h"
 #include "verbs.h"
 
@@ -44,7 +45,7 @@ int run_sun(const SunArguments& arguments) {
   const Scene& scene = load_scene_until_exit(arguments.scene);
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
-  const SunPlacement* sun = &choose_sun(scene, arguments.scene, arguments.light);
+  const SunPlacement* sun = &studies::choose_sun(scene, arguments.scene, arguments.light);
   // Times without an offset are on the clock of the scene's sun time (issue 19).
   const int offset = sun->time.offset_minutes;
   const sun::CivilDate day = sun::civil_date_time(sun->time.utc, offset).date;

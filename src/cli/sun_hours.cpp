@@ -24,6 +24,7 @@
 #include "penumbra/io/sun_hours_document.h"
 #include "penumbra/scene/object_selection.h"
 #include "penumbra/studies/sun_hours.h"
+#include "penumbra/studies/sun_hours_request.h"
 #include "verbs.h"
 
 namespace penumbra::cli {
@@ -44,53 +45,6 @@ struct SunHoursArguments {
   std::string site;
   bool stats = false;
 };
-
-// the most steps one command computes (a year at 10-minute steps is 52,560).
-constexpr long long kMaxSteps = 1'000'000;
-
-// returns the UTC offset in minutes of text such as +01:00, -0530, Z.
-int parse_offset(const std::string& text) {
-  return sun::parse_date_time("2000-01-01T00:00" + text, std::nullopt, {"", "--utc-offset"})
-      .offset_minutes;
-}
-
-// returns the sun of the study: the scene's, or with --site one at that place, with the
-// illuminance of the scene's sun or directional light of that name (100,000 lx otherwise).
-SunPlacement study_sun(const Scene& scene, const SunHoursArguments& arguments) {
-  if (arguments.site.empty()) return choose_sun(scene, arguments.scene, arguments.light);
-  SunPlacement sun;
-  sun.name = arguments.light.empty() ? "sun" : arguments.light;
-  sun.json_path = "--site";
-  sun.illuminance = 100000;
-  for (const SunPlacement& candidate : scene.suns)
-    if (candidate.name == sun.name) sun = candidate;
-  if (const Light* light = scene.find_light(sun.name))
-    if (const auto* directional = std::get_if<DirectionalLight>(&light->source))
-      sun.illuminance = directional->illuminance;
-  std::vector<double> values;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = arguments.site.find(',', start);
-    const std::string field = arguments.site.substr(start, comma - start);
-    try {
-      std::size_t used = 0;
-      values.push_back(std::stod(field, &used));
-      if (used != field.size()) throw std::invalid_argument(field);
-    } catch (const std::exception&) {
-      throw InputError("", "--site",
-                       "expected LATITUDE,LONGITUDE[,ELEVATION], found '" + arguments.site + "'");
-    }
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  if (values.size() < 2 || values.size() > 3 || !(std::abs(values[0]) <= 90) ||
-      !(std::abs(values[1]) <= 180) || (values.size() == 3 && !std::isfinite(values[2])))
-    throw InputError("", "--site",
-                     "expected LATITUDE (-90..90),LONGITUDE (-180..180)[,ELEVATION m], found '" +
-                         arguments.site + "'");
-  sun.site = {values[0], values[1], values.size() == 3 ? values[2] : 0.0};
-  return sun;
-}
 
 // returns "A m2 of T m2 (P %)".
 std::string area_share(double reached, double total) {
@@ -179,31 +133,21 @@ int run_sun_hours(const SunHoursArguments& arguments) {
   const Scene& scene = load_scene_until_exit(arguments.scene);
   for (const std::string& warning : scene.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
-  const SunPlacement sun = study_sun(scene, arguments);
+  studies::SunHoursRequest request;
+  request.scene_path = arguments.scene;
+  request.light = arguments.light;
+  request.site = arguments.site;
+  request.date = arguments.date;
+  request.to = arguments.to;
+  request.step = arguments.step;
+  request.utc_offset = arguments.utc_offset;
   if (!arguments.threshold.empty() && arguments.region.empty())
     throw InputError("", "--threshold", "needs --region NAME[,NAME...] or --region 'x,y x,y x,y'");
   if (arguments.threshold.empty() && !arguments.region.empty())
     throw InputError("", "--region", "needs --threshold, e.g. 2h");
-
-  // Dates are days on the clock of the scene's sun time unless --utc-offset says otherwise.
-  const int offset =
-      arguments.utc_offset.empty() ? sun.time.offset_minutes : parse_offset(arguments.utc_offset);
-  if (arguments.date.empty() && sun.json_path == "--site")
-    throw InputError("", "--date", "is needed with --site (the scene gives no date)");
-  const sun::CivilDate first =
-      arguments.date.empty() ? sun::civil_date_time(sun.time.utc, sun.time.offset_minutes).date
-                             : sun::parse_date(arguments.date, {"", "--date"});
-  const sun::CivilDate last =
-      arguments.to.empty() ? first : sun::parse_date(arguments.to, {"", "--to"});
-  const sun::UtcInstant from = sun::local_midnight(first, offset);
-  const sun::UtcInstant end = sun::local_midnight(last, offset) + std::chrono::hours(24);
-  if (end <= from) throw InputError("", "--to", "is before --date");
-  const sun::Duration step = sun::parse_step(arguments.step, {"", "--step"});
-  if ((end - from) / step >= kMaxSteps)
-    throw InputError("", "--step", "more than 10^6 steps: use a longer step or fewer days");
-  // The steps of the days: from the first midnight up to, not including, the last one.
-  const std::vector<sun::UtcInstant> instants =
-      sun::step_instants({from, offset}, end - sun::Duration(1), step);
+  const studies::SunHoursPlan study = studies::plan_sun_hours(scene, request);
+  const SunPlacement& sun = study.sun;
+  const std::vector<sun::UtcInstant>& instants = study.instants;
   std::optional<sun::Duration> threshold;
   if (!arguments.threshold.empty())
     threshold = sun::parse_step(arguments.threshold, {"", "--threshold"});
@@ -224,7 +168,7 @@ int run_sun_hours(const SunHoursArguments& arguments) {
   };
   options.face_done = [&] { progress->advance(); };
   const studies::SunHoursResult& result =
-      keep_until_exit(studies::sun_hours(scene, sun, instants, step, options));
+      keep_until_exit(studies::sun_hours(scene, sun, instants, study.step, options));
   progress.reset();
   for (const std::string& warning : result.faces.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
@@ -233,13 +177,7 @@ int run_sun_hours(const SunHoursArguments& arguments) {
               << "' is below the horizon at every step: every face gets 0 h\n";
   const auto computed = Clock::now();
 
-  io::SunHoursHeader header;
-  header.sun = sun.name;
-  header.offset_minutes = offset;
-  header.from = sun::format_date_time(from, offset);
-  header.to = sun::format_date_time(end, offset);
-  header.north_deg = scene.north_deg;
-  header.site = sun.site;
+  const io::SunHoursHeader header = io::sun_hours_header(scene, study);
   // The JSON goes to standard output with "-o -", or when nothing else is asked for.
   const bool to_stdout =
       arguments.output == "-" || (arguments.output.empty() && arguments.report.empty() &&

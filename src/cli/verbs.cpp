@@ -34,19 +34,4 @@ const Scene& load_scene_until_exit(const std::string& path) {
   return keep_until_exit(load_scene(path));
 }
 
-const SunPlacement& choose_sun(const Scene& scene, const std::string& path,
-                               const std::string& name) {
-  if (scene.suns.empty())
-    throw InputError(path, "lights",
-                     "no light is a sun given by place and time (\"sun\": {\"latitude\", ...})");
-  if (name.empty()) {
-    if (scene.suns.size() > 1)
-      throw InputError("", "--light", "the scene has several suns: name one");
-    return scene.suns.front();
-  }
-  for (const SunPlacement& candidate : scene.suns)
-    if (candidate.name == name) return candidate;
-  throw InputError("", "--light", "no sun named '" + name + "'");
-}
-
 }  // namespace penumbra::cli

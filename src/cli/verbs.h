@@ -55,10 +55,4 @@ T& keep_until_exit(T&& value) {
 // returns the scene of path (load_scene), kept until the process exits.
 const Scene& load_scene_until_exit(const std::string& path);
 
-// returns the sun (a light given by place and time) of the scene loaded from path that
-// --light names, or its only one when name is empty. Throws InputError when there is none,
-// when name names none, or when the scene has several and name is empty.
-const SunPlacement& choose_sun(const Scene& scene, const std::string& path,
-                               const std::string& name);
-
 }  // namespace penumbra::cli

@@ -1,8 +1,10 @@
 #include "penumbra/illuminance/scene_illuminance.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "penumbra/base/input_error.h"
 #include "penumbra/base/parallel.h"
 #include "penumbra/illuminance/point_source.h"
 #include "penumbra/photometry/orientation.h"
@@ -177,6 +179,24 @@ PointIlluminance IlluminanceSolver::at(
 
 PointIlluminance illuminance_at(const Scene& scene, const Vec3d& point, const Vec3d& normal) {
   return IlluminanceSolver(scene).at(point, normal);
+}
+
+ReceivingPoint receiving_point(const std::array<double, 6>& values, const std::string& file,
+                               const std::string& where) {
+  constexpr double kNormalLengthTolerance = 1e-3;
+  for (double value : values)
+    if (!std::isfinite(value)) throw InputError(file, where, "a value is not a finite number");
+  ReceivingPoint receiver{{values[0], values[1], values[2]}, {values[3], values[4], values[5]}};
+  const double length =
+      std::sqrt(values[3] * values[3] + values[4] * values[4] + values[5] * values[5]);
+  if (length == 0)
+    throw InputError(file, where + ", columns nx,ny,nz", "the normal is the zero vector");
+  if (std::abs(length - 1) > kNormalLengthTolerance)
+    throw InputError(
+        file, where + ", columns nx,ny,nz",
+        "the normal has length " + std::to_string(length) + "; give a unit vector (within 1e-3)");
+  for (double& n : receiver.normal) n /= length;
+  return receiver;
 }
 
 std::vector<PointIlluminance> illuminance_at_points(

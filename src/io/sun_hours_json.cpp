@@ -37,6 +37,17 @@ void emit_face(JsonEmitter& out, const Scene& scene, const SunHoursResult& resul
 
 }  // namespace
 
+SunHoursHeader sun_hours_header(const Scene& scene, const studies::SunHoursPlan& plan) {
+  SunHoursHeader header;
+  header.sun = plan.sun.name;
+  header.offset_minutes = plan.offset_minutes;
+  header.from = sun::format_date_time(plan.from, plan.offset_minutes);
+  header.to = sun::format_date_time(plan.end, plan.offset_minutes);
+  header.north_deg = scene.north_deg;
+  header.site = plan.sun.site;
+  return header;
+}
+
 json sun_hours_json(const Scene& scene, const SunHoursResult& result, const SunHoursHeader& header,
                     bool exact) {
   json times = json::array();

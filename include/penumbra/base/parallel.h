@@ -10,11 +10,17 @@
 
 namespace penumbra {
 
+// limits every parallel loop to PENUMBRA_THREADS threads when that environment variable is
+// a positive whole number (1: every loop on one thread; a Dask worker given one core), to
+// TBB's default otherwise; read once, on the first call. for_each_range calls it.
+void apply_thread_limit();
+
 // calls work(begin, end) on disjoint sub-ranges that together cover [0, count): across
 // threads when parallel, each at least grain long where count allows; once with (0, count)
 // otherwise.
 template <typename Work>
 void for_each_range(std::size_t count, bool parallel, const Work& work, std::size_t grain = 1) {
+  if (parallel) apply_thread_limit();
   if (parallel)
     tbb::parallel_for(
         tbb::blocked_range<std::size_t>(0, count, grain),

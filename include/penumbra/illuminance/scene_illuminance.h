@@ -17,10 +17,12 @@
 // segment that only touches an occluder's boundary is not blocked; a point strictly
 // inside an object gets 0 from every light.
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "penumbra/illuminance/occlusion.h"
@@ -92,6 +94,14 @@ struct ReceivingPoint {
   Vec3d point;
   Vec3d normal;
 };
+
+// returns the receiving point of the values x, y, z, nx, ny, nz, its normal scaled to unit
+// length. A normal further than 1e-3 from unit length (enough for four decimals: 0.7071,
+// 0.7071 has length 0.99999) is more likely a mix-up of columns than a normal, so it is
+// refused rather than silently rescaled: InputError naming file and where (e.g. "line 4"),
+// as for a zero normal or a value that is not finite.
+ReceivingPoint receiving_point(const std::array<double, 6>& values, const std::string& file,
+                               const std::string& where);
 
 // computes solver.at(point, normal) at every receiving point, across TBB's threads: the one
 // loop of `illuminance --points` and the work plane. advance, when given, is called with

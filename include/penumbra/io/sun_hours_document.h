@@ -13,6 +13,7 @@
 
 #include "penumbra/io/shadow_drawing.h"
 #include "penumbra/studies/sun_hours.h"
+#include "penumbra/studies/sun_hours_request.h"
 
 namespace penumbra::io {
 
@@ -24,6 +25,9 @@ struct SunHoursHeader {
   double north_deg = 0;    // the scene's
   sun::Site site;
 };
+
+// returns the header of the study plan asks for on scene.
+SunHoursHeader sun_hours_header(const Scene& scene, const studies::SunHoursPlan& plan);
 
 // builds the document: {"faces": [...], "penumbra_sun_hours": 1, "steps": {...}, "sun": {...}};
 // each face entry as the shadow document's with "hours": [{"area", "hours", "minutes",
