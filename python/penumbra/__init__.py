@@ -35,6 +35,12 @@ Light = namedtuple("Light", "name kind")
 Light.__doc__ = "A light of a scene: its name and kind (point, linear or directional)."
 
 
+def _input_error(location, message, file=""):
+    error = InputError(f"{file or '<input>'}: {location}: {message}")
+    error.file, error.location, error.message = file, location, message
+    return error
+
+
 class Scene:
     """A scene (docs/scene-format.md), loaded once and queried many times."""
 
@@ -128,6 +134,19 @@ class Scene:
         row by row, with normal +z."""
         return self._native.workplane_grid(height, spacing,
                                            None if region is None else tuple(region))
+
+    def sun_shadows(self, time, light=None, exact=True, receivers=None, range_fraction=1 / 256,
+                    full_scale_lux=500.0, range_lux=None):
+        """returns the shadows (Shadows) of the scene lit by its sun alone at time (ISO 8601;
+        without an offset, on the clock of the sun's time): one time of `penumbra shadows
+        --times`. Raises InputError when the sun is below the horizon then."""
+        step = _penumbra.sun_step_at(self._native, light or "", time)
+        if not step[6]:
+            raise _input_error("time", f"the sun is below the horizon at {step[0]}")
+        documents, warnings = _penumbra.sun_shadow_documents(
+            self._native, light or "", [step[:6]], receivers, exact, range_fraction,
+            full_scale_lux, range_lux)
+        return Shadows(documents[0], warnings)
 
     def sun_hours(self, date=None, step="10min", to=None, light=None, site=None,
                   utc_offset=None, receivers=None, exact=False):

@@ -119,6 +119,9 @@ class Scene:
     def workplane_grid(self, height: float, spacing: float, region: Optional[Sequence[float]] = ...
                        ) -> tuple[npt.NDArray[np.float64], int, int,
                                   tuple[float, float, float, float]]: ...
+    def sun_shadows(self, time: str, light: Optional[str] = ..., exact: bool = ...,
+                    receivers: Receivers = ..., range_fraction: float = ...,
+                    full_scale_lux: float = ..., range_lux: Optional[float] = ...) -> Shadows: ...
     def sun_hours(self, date: Optional[str] = ..., step: str = ..., to: Optional[str] = ...,
                   light: Optional[str] = ..., site: Optional[str] = ...,
                   utc_offset: Optional[str] = ..., receivers: Receivers = ...,

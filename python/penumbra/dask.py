@@ -8,7 +8,7 @@ results are merged into exactly what the single-process run gives:
   of an object, and every piece of a model's part, in one tile; the others still cast
   shadows), merged in the documents' canonical order;
 - ``illuminance`` and ``workplane``: by chunks of points, concatenated;
-- ``shadow_diagram``: by time steps (one scene per time), as ``shadows --times``.
+- ``shadow_times``: by time steps, a few a task, as ``shadows --times``.
 
 Each worker loads a scene once (the path is the key: the workers must see the scene file, and
 what it refers to, at the same path: a shared file system or a copy) and keeps it for the
@@ -23,10 +23,10 @@ import threading
 
 import numpy as np
 
-from . import InputError, Scene, SunHours, Workplane
+from . import InputError, Scene, SunHours, Workplane, _penumbra
 
-__all__ = ["sun_hours", "illuminance", "workplane", "spatial_tiles", "client_for",
-           "worker_loads"]
+__all__ = ["sun_hours", "illuminance", "workplane", "shadow_times", "spatial_tiles",
+           "client_for", "worker_loads"]
 
 # === On the workers
 
@@ -77,6 +77,13 @@ def _sun_hours_tile(path, owners, study, exact):
 
 def _illuminance_chunk(path, points):
     return _scene(path)._native.illuminance(np.ascontiguousarray(points, dtype=np.float64))
+
+
+def _shadow_times_chunk(path, light, steps, receivers, exact, culling):
+    return _penumbra.sun_shadow_documents(_scene(path)._native, light, steps, receivers, exact,
+                                          culling.get("range_fraction", 1 / 256),
+                                          culling.get("full_scale_lux", 500.0),
+                                          culling.get("range_lux"))
 
 
 def _gather(client, work, *arguments, retries):
@@ -221,3 +228,23 @@ def workplane(scene_path, height, spacing, region=None, client=None, tasks=None,
     scene = Scene.load(path)
     grid = scene.workplane_grid(height, spacing, region)
     return Workplane(scene, grid, *_illuminance_arrays(path, grid[0], client, tasks, retries))
+
+
+def shadow_times(scene_path, steps, light="", client=None, receivers=None, exact=False,
+                 tasks=None, retries=2, **culling):
+    """returns (documents, warnings): the shadow document of the scene lit by its sun alone
+    from each step (time, azimuth_deg, elevation_deg, dx, dy, dz), the times of `penumbra
+    shadows --times` (which computes the steps), a few steps a task."""
+    path = os.path.abspath(os.fspath(scene_path))
+    steps = [tuple(step) for step in steps]
+    with client_for(client) as running:
+        chunks = _chunks(len(steps), tasks or 2 * _cores(running))
+        parts = _gather(running, _shadow_times_chunk, [path] * len(chunks),
+                        [light] * len(chunks), [steps[a:b] for a, b in chunks],
+                        [receivers] * len(chunks), [exact] * len(chunks),
+                        [culling] * len(chunks), retries=retries)
+    documents, warnings = [], []
+    for found, said in parts:
+        documents += found
+        warnings += [w for w in said if w not in warnings]
+    return documents, warnings

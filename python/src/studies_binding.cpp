@@ -4,6 +4,7 @@
 
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include <pybind11/stl.h>
 
@@ -11,6 +12,7 @@
 #include "json_to_python.h"
 #include "penumbra/base/atomic_file.h"
 #include "penumbra/base/input_error.h"
+#include "penumbra/io/shadow_diagram.h"
 #include "penumbra/io/shadow_json.h"
 #include "penumbra/io/sun_hours_document.h"
 #include "penumbra/studies/sun_hours.h"
@@ -89,6 +91,57 @@ py::tuple solar_position(double latitude, double longitude, const std::string& t
   }
 }
 
+using StepValues = std::tuple<std::string, double, double, double, double, double>;
+
+// the step of the sun named light (the only one when empty) at time (ISO 8601; without an
+// offset, on the clock of the sun's time): (time, azimuth, elevation, dx, dy, dz, sun up).
+py::tuple sun_step_at(const SceneHandle& handle, const std::string& light,
+                      const std::string& time) {
+  const Scene& scene = handle.scene();
+  const SunPlacement& sun = studies::choose_sun(scene, scene.file.string(), light);
+  const sun::ZonedInstant when = sun::parse_date_time(time, sun.time.offset_minutes, {"", "time"});
+  const studies::SunStep step = studies::sun_steps(sun, scene.north_deg, {when.utc}).front();
+  return py::make_tuple(sun::format_date_time(when.utc, when.offset_minutes),
+                        step.position.azimuth_deg, step.position.elevation_deg, step.direction[0],
+                        step.direction[1], step.direction[2], step.up());
+}
+
+// the shadow documents of the scene lit by its sun light alone from each step (when, azimuth,
+// elevation, dx, dy, dz): the times of `shadows --times`, and its tasks on Dask.
+py::tuple sun_shadow_documents(const SceneHandle& handle, const std::string& light,
+                               const std::vector<StepValues>& steps, const py::object& receivers,
+                               bool exact, double range_fraction, double full_scale_lux,
+                               std::optional<double> range_lux) {
+  const Scene& scene = handle.scene();
+  const SunPlacement& sun = studies::choose_sun(scene, scene.file.string(), light);
+  ShadowOptions options;
+  options.range_fraction = range_fraction;
+  options.full_scale_lux = full_scale_lux;
+  options.range_lux = range_lux;
+  options.receivers = chosen_receivers(scene, receivers);
+  io::ShadowJsonOptions json_options;
+  json_options.exact = exact;
+  json_options.range_fraction = range_fraction;
+  json_options.full_scale_lux = full_scale_lux;
+  json_options.range_lux = range_lux;
+  std::vector<nlohmann::json> documents;
+  std::vector<std::string> warnings;
+  {
+    py::gil_scoped_release unlocked;
+    io::SunShadows shadows(scene, sun, options, json_options);
+    for (const auto& [when, azimuth, elevation, dx, dy, dz] : steps) {
+      studies::SunStep step;
+      step.position = {azimuth, elevation};
+      step.direction = {dx, dy, dz};
+      documents.push_back(std::move(shadows.at(step, when).shadows));
+    }
+    warnings = shadows.warnings();
+  }
+  py::list list;
+  for (const nlohmann::json& document : documents) list.append(to_python(document));
+  return py::make_tuple(list, warnings);
+}
+
 std::string format_json(const py::object& document) {
   const nlohmann::json value = from_python(document);
   py::gil_scoped_release unlocked;
@@ -121,6 +174,10 @@ void bind_studies(py::module_& module) {
   module.def("solar_position", &solar_position, py::arg("latitude"), py::arg("longitude"),
              py::arg("time"), py::arg("elevation") = 0.0, py::arg("pressure_hpa") = py::none(),
              py::arg("temperature_c") = py::none());
+  module.def("sun_step_at", &sun_step_at, py::arg("scene"), py::arg("light"), py::arg("time"));
+  module.def("sun_shadow_documents", &sun_shadow_documents, py::arg("scene"), py::arg("light"),
+             py::arg("steps"), py::arg("receivers"), py::arg("exact"), py::arg("range_fraction"),
+             py::arg("full_scale_lux"), py::arg("range_lux"));
   module.def("format_json", &format_json, py::arg("document"),
              "the document as the command line writes it to files");
   module.def("write_sun_hours_svg", &write_sun_hours_svg, py::arg("document"), py::arg("path"),

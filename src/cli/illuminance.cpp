@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -11,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "dask_driver.h"
 #include "numeric_csv.h"
 #include "penumbra/base/atomic_file.h"
 #include "penumbra/base/csv.h"
@@ -37,6 +40,7 @@ struct IlluminanceArguments {
   std::string region;
   std::string svg;
   std::string levels;
+  std::string dask;
 };
 
 // === Reading the points file (header x,y,z,nx,ny,nz; columns found by name)
@@ -73,15 +77,57 @@ void write_values(std::ostream& out, const Scene& scene,
   }
 }
 
+// computes the illuminance at the receivers in this process, or with --dask in chunks of
+// points on the cluster (dask_driver.h): the same values either way.
+std::vector<il::PointIlluminance> illuminance_at(const IlluminanceArguments& arguments,
+                                                 const Scene& scene,
+                                                 const std::vector<il::ReceivingPoint>& receivers,
+                                                 const char* what) {
+  if (arguments.dask.empty()) {
+    const il::IlluminanceSolver solver(scene);
+    Progress progress(what, receivers.size());
+    return il::illuminance_at_points(solver, receivers,
+                                     [&](std::size_t done) { progress.advance(done); });
+  }
+  const std::string points = dask_scratch_file("points.f64");
+  {
+    std::ofstream out(points, std::ios::binary);
+    for (const il::ReceivingPoint& receiver : receivers) {
+      out.write(reinterpret_cast<const char*>(receiver.point.data()), 3 * sizeof(double));
+      out.write(reinterpret_cast<const char*>(receiver.normal.data()), 3 * sizeof(double));
+    }
+  }
+  const std::string file =
+      run_on_dask(arguments.dask, {{"job", "illuminance"},
+                                   {"scene", std::filesystem::absolute(arguments.scene).string()},
+                                   {"points", points}});
+  // E (n doubles), E per light (n x lights doubles, row by row), the holding object (n int64)
+  const std::size_t n = receivers.size(), lights = scene.lights.size();
+  std::vector<double> total(n), per_light(n * lights);
+  std::vector<std::int64_t> inside(n);
+  std::ifstream in(file, std::ios::binary);
+  in.read(reinterpret_cast<char*>(total.data()), static_cast<std::streamsize>(n * sizeof(double)));
+  in.read(reinterpret_cast<char*>(per_light.data()),
+          static_cast<std::streamsize>(n * lights * sizeof(double)));
+  in.read(reinterpret_cast<char*>(inside.data()),
+          static_cast<std::streamsize>(n * sizeof(std::int64_t)));
+  if (!in || in.peek() != std::char_traits<char>::eof())
+    throw InputError(file, "",
+                     "the driver's result does not hold " + std::to_string(n) + " points");
+  std::vector<il::PointIlluminance> values(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    values[k].total = total[k];
+    values[k].per_light.assign(per_light.begin() + static_cast<std::ptrdiff_t>(k * lights),
+                               per_light.begin() + static_cast<std::ptrdiff_t>((k + 1) * lights));
+    if (inside[k] >= 0) values[k].inside = static_cast<std::size_t>(inside[k]);
+  }
+  return values;
+}
+
 int run_points(const IlluminanceArguments& arguments, const Scene& scene) {
   const std::vector<il::ReceivingPoint> receivers = read_points(arguments.points);
-  const il::IlluminanceSolver solver(scene);
-  std::vector<il::PointIlluminance> values;
-  {
-    Progress progress("illuminance", receivers.size());
-    values = il::illuminance_at_points(solver, receivers,
-                                       [&](std::size_t done) { progress.advance(done); });
-  }
+  const std::vector<il::PointIlluminance> values =
+      illuminance_at(arguments, scene, receivers, "illuminance");
   if (arguments.output.empty() || arguments.output == "-")
     write_values(std::cout, scene, receivers, values);
   else
@@ -120,13 +166,8 @@ int run_workplane(const IlluminanceArguments& arguments, const Scene& scene) {
 
   const il::WorkplaneGrid grid =
       il::make_workplane_grid(*arguments.workplane, arguments.spacing, region);
-  const il::IlluminanceSolver solver(scene);
-  il::WorkplaneValues values;
-  {
-    Progress progress("work plane", grid.size());
-    values =
-        il::evaluate_workplane(solver, grid, [&](std::size_t done) { progress.advance(done); });
-  }
+  const il::WorkplaneValues values{
+      grid, illuminance_at(arguments, scene, il::workplane_points(grid), "work plane")};
   const il::WorkplaneStatistics statistics = il::workplane_statistics(values);
 
   if (!arguments.output.empty()) {
@@ -191,6 +232,9 @@ void register_illuminance(CLI::App& app) {
   verb->add_option("--svg", arguments->svg, "isolux plot of the work plane (SVG)");
   verb->add_option("--levels", arguments->levels,
                    "isolux levels in lux, e.g. 100,200,500 (default: chosen)");
+  verb->add_option("--dask", arguments->dask,
+                   "compute on the Dask cluster of this scheduler (tcp://host:8786), in chunks "
+                   "of points; the outputs are those of one process (docs/python.md)");
   verb->callback([arguments] { exit_status() = run_illuminance(*arguments); });
 }
 

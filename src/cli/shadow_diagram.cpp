@@ -1,7 +1,11 @@
 #include "shadow_diagram.h"
 
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <set>
 
+#include "dask_driver.h"
 #include "penumbra/base/atomic_file.h"
 #include "penumbra/base/input_error.h"
 #include "penumbra/base/progress.h"
@@ -55,6 +59,50 @@ std::vector<sun::ZonedInstant> diagram_times(const std::string& text, int offset
   return times;
 }
 
+// computes the times drawn on the Dask cluster of arguments.dask (dask_driver.h), a few
+// times a task: the documents one process makes.
+std::vector<io::DiagramTime> diagram_on_dask(const Scene& scene, const DiagramArguments& arguments,
+                                             const SunPlacement& sun,
+                                             const std::vector<studies::SunStep>& steps,
+                                             const std::vector<std::size_t>& up,
+                                             const std::vector<std::string>& when) {
+  nlohmann::json request = {
+      {"job", "shadow_times"},
+      {"scene", std::filesystem::absolute(arguments.scene).string()},
+      {"light", sun.name},
+      {"exact", arguments.exact},
+      {"range_fraction", arguments.options.range_fraction},
+      {"full_scale_lux", arguments.options.full_scale_lux},
+      {"range_lux", arguments.options.range_lux ? nlohmann::json(*arguments.options.range_lux)
+                                                : nlohmann::json()},
+      {"receivers", nullptr},
+      {"steps", nlohmann::json::array()}};
+  if (arguments.options.receivers) {
+    std::set<std::string> owners;
+    for (const Receiver& receiver : *arguments.options.receivers)
+      owners.insert(scene.objects[receiver.object].face_owner());
+    request["receivers"] = owners;
+  }
+  for (std::size_t k : up)
+    request["steps"].push_back({when[k], steps[k].position.azimuth_deg,
+                                steps[k].position.elevation_deg, steps[k].direction[0],
+                                steps[k].direction[1], steps[k].direction[2]});
+  const std::string file = run_on_dask(arguments.dask, request);
+  nlohmann::json documents;
+  try {
+    documents = nlohmann::json::parse(std::ifstream(file)).at("documents");
+  } catch (const nlohmann::json::exception& error) {
+    throw InputError(file, "", std::string("the driver's result is not its JSON: ") + error.what());
+  }
+  if (!documents.is_array() || documents.size() != up.size())
+    throw InputError(file, "documents", "expected " + std::to_string(up.size()) + " documents");
+  std::vector<io::DiagramTime> drawn;
+  for (std::size_t k = 0; k < up.size(); ++k)
+    drawn.push_back({when[up[k]], steps[up[k]].position.azimuth_deg,
+                     steps[up[k]].position.elevation_deg, std::move(documents[k])});
+  return drawn;
+}
+
 }  // namespace
 
 int run_shadow_diagram(const Scene& scene, const DiagramArguments& arguments) {
@@ -65,30 +113,32 @@ int run_shadow_diagram(const Scene& scene, const DiagramArguments& arguments) {
   for (const sun::ZonedInstant& t : times) instants.push_back(t.utc);
   const std::vector<studies::SunStep> steps = studies::sun_steps(sun, scene.north_deg, instants);
 
-  // The scene lit by the sun alone, where it stands at each time.
-  Scene stepped = scene;
   io::ShadowJsonOptions json_options;
   json_options.exact = arguments.exact;
   json_options.range_fraction = arguments.options.range_fraction;
   json_options.full_scale_lux = arguments.options.full_scale_lux;
   json_options.range_lux = arguments.options.range_lux;
-  std::vector<io::DiagramTime> drawn;
-  std::vector<std::string> skipped;
-  Progress progress("shadow diagram", steps.size());
+  std::vector<std::size_t> up;  // the steps drawn
+  std::vector<std::string> when(steps.size()), skipped;
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const std::string when = sun::format_date_time(times[k].utc, times[k].offset_minutes);
-    if (!steps[k].up()) {
-      std::cerr << "penumbra: the sun is below the horizon at " << when << ": skipped\n";
-      skipped.push_back(when);
-      progress.advance();
-      continue;
+    when[k] = sun::format_date_time(times[k].utc, times[k].offset_minutes);
+    if (steps[k].up()) {
+      up.push_back(k);
+    } else {
+      std::cerr << "penumbra: the sun is below the horizon at " << when[k] << ": skipped\n";
+      skipped.push_back(when[k]);
     }
-    stepped.lights = {
-        Light{sun.name, DirectionalLight{steps[k].direction, sun.illuminance}, sun.json_path}};
-    const ShadowResult result = compute_shadows(stepped, arguments.options);
-    drawn.push_back({when, steps[k].position.azimuth_deg, steps[k].position.elevation_deg,
-                     io::shadow_json(stepped, result, json_options)});
-    progress.advance();
+  }
+  std::vector<io::DiagramTime> drawn;
+  if (!arguments.dask.empty()) {
+    drawn = diagram_on_dask(scene, arguments, sun, steps, up, when);
+  } else {
+    io::SunShadows shadows(scene, sun, arguments.options, json_options);
+    Progress progress("shadow diagram", up.size());
+    for (std::size_t k : up) {
+      drawn.push_back(shadows.at(steps[k], when[k]));
+      progress.advance();
+    }
   }
   const nlohmann::json diagram = io::shadow_diagram_json(sun.name, drawn, skipped);
   if (arguments.output.empty() || arguments.output == "-")

@@ -17,6 +17,7 @@ struct DiagramArguments {
   std::string svg;     // the plan-view diagram
   bool exact = false;
   ShadowOptions options;  // receivers and culling as the verb's
+  std::string dask;       // the scheduler to compute the times on, or ""
 };
 
 // computes and writes the diagram; returns the exit status. Throws InputError for bad

@@ -35,6 +35,7 @@ struct ShadowsArguments {
   bool stats = false;
   std::string receivers;
   std::string times;
+  std::string dask;
 };
 
 int run_shadows(const ShadowsArguments& arguments) {
@@ -66,8 +67,12 @@ int run_shadows(const ShadowsArguments& arguments) {
           std::pair{!arguments.report.empty(), "--report"}, std::pair{arguments.loops, "--loops"},
           std::pair{arguments.view != "top", "--view"}})
       if (given) throw InputError("", name, "is for one time, not with --times");
-    return run_shadow_diagram(scene, {arguments.scene, arguments.light, arguments.times,
-                                      arguments.output, arguments.svg, arguments.exact, options});
+    return run_shadow_diagram(
+        scene, {arguments.scene, arguments.light, arguments.times, arguments.output, arguments.svg,
+                arguments.exact, options, arguments.dask});
+  }
+  if (!arguments.dask.empty()) {
+    throw InputError("", "--dask", "is for a shadow diagram (--times) here");
   }
   const ShadowResult& result = keep_until_exit(compute_shadows(scene, options));
   const auto shaded = Clock::now();
@@ -160,6 +165,9 @@ void register_shadows(CLI::App& app) {
                    "shadow diagram of the scene's sun: FROM,TO,STEP (e.g. "
                    "2026-03-21T09:00,2026-03-21T15:00,1h) or T1,T2,...; JSON with a time axis "
                    "and a plan-view SVG with a layer per time");
+  verb->add_option("--dask", arguments->dask,
+                   "with --times: compute the times on the Dask cluster of this scheduler "
+                   "(tcp://host:8786); the outputs are those of one process (docs/python.md)");
   verb->add_flag("--stats", arguments->stats,
                  "print faces, pairs tested and time per light on stderr");
   verb->callback([arguments] { exit_status() = run_shadows(*arguments); });

@@ -9,14 +9,18 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "dask_driver.h"
 #include "penumbra/base/atomic_file.h"
 #include "penumbra/base/input_error.h"
 #include "penumbra/base/progress.h"
@@ -44,7 +48,45 @@ struct SunHoursArguments {
   std::string threshold, region;
   std::string site;
   bool stats = false;
+  std::string dask;
 };
+
+// computes the study on the Dask cluster at arguments.dask (dask_driver.h): tiles of the
+// receiving faces' owners, merged into the exact document that is read back here.
+studies::SunHoursResult sun_hours_on_dask(const Scene& scene, const SunHoursArguments& arguments,
+                                          const studies::SunHoursPlan& study,
+                                          const std::optional<std::vector<Receiver>>& receivers) {
+  const auto given = [](const std::string& text) {
+    return text.empty() ? nlohmann::json() : nlohmann::json(text);
+  };
+  nlohmann::json request = {{"job", "sun_hours"},
+                            {"scene", std::filesystem::absolute(arguments.scene).string()},
+                            {"study",
+                             {{"date", given(arguments.date)},
+                              {"to", given(arguments.to)},
+                              {"step", given(arguments.step)},
+                              {"light", given(arguments.light)},
+                              {"site", given(arguments.site)},
+                              {"utc_offset", given(arguments.utc_offset)}}},
+                            {"receivers", nullptr}};
+  if (receivers) {
+    std::set<std::string> owners;
+    for (const Receiver& receiver : *receivers)
+      owners.insert(scene.objects[receiver.object].face_owner());
+    request["receivers"] = owners;
+  }
+  const std::string file = run_on_dask(arguments.dask, request);
+  nlohmann::json merged;
+  try {
+    merged = nlohmann::json::parse(std::ifstream(file));
+  } catch (const nlohmann::json::exception& error) {
+    throw InputError(file, "", std::string("the driver's result is not JSON: ") + error.what());
+  }
+  studies::SunHoursResult result =
+      io::sun_hours_from_json(scene, study, receivers, merged["document"], file);
+  result.faces.warnings = merged.value("warnings", std::vector<std::string>());
+  return result;
+}
 
 // returns "A m2 of T m2 (P %)".
 std::string area_share(double reached, double total) {
@@ -167,8 +209,10 @@ int run_sun_hours(const SunHoursArguments& arguments) {
     progress = std::make_unique<Progress>("sun-hours: overlays", faces);
   };
   options.face_done = [&] { progress->advance(); };
-  const studies::SunHoursResult& result =
-      keep_until_exit(studies::sun_hours(scene, sun, instants, study.step, options));
+  if (!arguments.dask.empty()) progress.reset();  // the cluster's dashboard shows the tasks
+  const studies::SunHoursResult& result = keep_until_exit(
+      arguments.dask.empty() ? studies::sun_hours(scene, sun, instants, study.step, options)
+                             : sun_hours_on_dask(scene, arguments, study, options.receivers));
   progress.reset();
   for (const std::string& warning : result.faces.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
@@ -260,6 +304,9 @@ void register_sun_hours(CLI::App& app) {
                    "patterns), or a polygon of the site plan 'x,y x,y x,y ...' on the faces "
                    "facing up");
   verb->add_flag("--stats", arguments->stats, "print steps, faces and time per stage on stderr");
+  verb->add_option("--dask", arguments->dask,
+                   "run the study on the Dask cluster of this scheduler (tcp://host:8786), in "
+                   "tiles of faces; the outputs are those of one process (docs/python.md)");
   verb->callback([arguments] { exit_status() = run_sun_hours(*arguments); });
 }
 

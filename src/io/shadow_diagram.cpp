@@ -1,5 +1,6 @@
 #include "penumbra/io/shadow_diagram.h"
 
+#include <algorithm>
 #include <cctype>
 #include <iomanip>
 #include <sstream>
@@ -10,6 +11,24 @@
 #include "svg_text.h"
 
 namespace penumbra::io {
+
+SunShadows::SunShadows(const Scene& scene, const SunPlacement& sun, ShadowOptions options,
+                       ShadowJsonOptions json_options)
+    : stepped_(scene),
+      sun_(sun),
+      options_(std::move(options)),
+      json_options_(std::move(json_options)) {}
+
+DiagramTime SunShadows::at(const studies::SunStep& step, const std::string& when) {
+  stepped_.lights = {
+      Light{sun_.name, DirectionalLight{step.direction, sun_.illuminance}, sun_.json_path}};
+  const ShadowResult result = compute_shadows(stepped_, options_);
+  for (const std::string& warning : result.warnings)
+    if (std::find(warnings_.begin(), warnings_.end(), warning) == warnings_.end())
+      warnings_.push_back(warning);
+  return {when, step.position.azimuth_deg, step.position.elevation_deg,
+          shadow_json(stepped_, result, json_options_)};
+}
 namespace {
 
 using nlohmann::json;

@@ -4,6 +4,7 @@ worker does not change the result, and a penumbra error fails the job with its m
 
 import os
 import signal
+import subprocess
 import threading
 import time
 
@@ -14,7 +15,7 @@ distributed = pytest.importorskip("distributed")
 
 import penumbra  # noqa: E402
 import penumbra.dask as pd  # noqa: E402
-from conftest import scene_path  # noqa: E402
+from conftest import BINARY, scene_path  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -86,3 +87,44 @@ def test_a_penumbra_error_fails_the_job_with_its_message(client, city):
     with pytest.raises(penumbra.InputError) as normal:
         pd.illuminance(scene_path("office.json"), bad, client=client, tasks=2)
     assert "normal" in str(normal.value)
+
+
+def run(*arguments, env=None):
+    done = subprocess.run([BINARY, *map(str, arguments)], capture_output=True, text=True,
+                          env=env)
+    return done.returncode, done.stdout, done.stderr
+
+
+def test_the_command_line_on_dask_writes_the_same_files(client, city, tmp_path):
+    address = client.scheduler.address
+    outputs = {}
+    for mode, extra in (("local", []), ("dask", ["--dask", address])):
+        d = tmp_path / mode
+        d.mkdir()
+        status, text, errors = run(
+            "sun-hours", city, "--date", "2026-03-21", "--step", "1h", "-o", d / "h.json",
+            "--report", d / "h.csv", "--svg", d / "h.svg", "--png", d / "h.png",
+            "--threshold", "2h", "--region", "ground", *extra)
+        assert status == 0, errors
+        status, plane, errors = run(
+            "illuminance", scene_path("office.json"), "--workplane", 0.8, "--spacing", 0.25,
+            "-o", d / "wp.csv", "--svg", d / "wp.svg", *extra)
+        assert status == 0, errors
+        status, _, errors = run(
+            "shadows", city, "--times", "2026-03-21T06:00,2026-03-21T18:00,2h", "--exact",
+            "-o", d / "d.json", "--svg", d / "d.svg", "--receivers", "ground,building1*", *extra)
+        assert status == 0, errors
+        outputs[mode] = (text, plane, {f.name: f.read_bytes() for f in sorted(d.iterdir())})
+    assert outputs["dask"] == outputs["local"]
+    assert set(outputs["dask"][2]) == {"h.json", "h.csv", "h.svg", "h.png", "wp.csv", "wp.svg",
+                                       "d.json", "d.svg"}
+
+
+def test_the_command_line_on_dask_reports_bad_input(client, city, tmp_path):
+    status, _, errors = run("sun-hours", city, "--date", "2026-03-21", "--light", "moon",
+                            "--dask", client.scheduler.address, "-o", tmp_path / "h.json")
+    assert status == 2 and "moon" in errors and not (tmp_path / "h.json").exists()
+    env = dict(os.environ, DASK_DISTRIBUTED__COMM__TIMEOUTS__CONNECT="2s")
+    status, _, errors = run("sun-hours", city, "--date", "2026-03-21", "--step", "1h",
+                            "--dask", "tcp://127.0.0.1:9", "-o", tmp_path / "h.json", env=env)
+    assert status == 2 and "--dask" in errors and not (tmp_path / "h.json").exists()

@@ -146,6 +146,20 @@ def test_sun_hours_and_sun_steps_equal_the_command_line(city, tmp_path):
         assert abs(elevation - float(row["elevation_deg"])) < 1e-5
 
 
+def test_sun_shadows_are_a_time_of_the_shadow_diagram(city, tmp_path):
+    out = tmp_path / "diagram.json"
+    run_cli("shadows", city, "--times", "2026-03-21T10:00,2026-03-21T15:30", "--exact", "-o", out)
+    diagram = json.loads(out.read_text())
+    scene = penumbra.Scene.load(city)
+    for entry in diagram["times"]:
+        shadows = scene.sun_shadows(entry["time"])
+        assert shadows.document == entry["shadows"]
+        assert len(shadows.faces) == len(scene.objects) * 6
+    with pytest.raises(penumbra.InputError) as night:
+        scene.sun_shadows("2026-03-21T23:00")
+    assert night.value.location == "time" and "below the horizon" in night.value.message
+
+
 def test_scene_from_dict_equals_the_file():
     path = scene_path("linear-fig5.json")
     from_file = penumbra.Scene.load(path).shadow_document(exact=True)[0]

@@ -10,6 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "penumbra/io/shadow_json.h"
+#include "penumbra/studies/sun_hours.h"
+
 namespace penumbra::io {
 
 // One time of the diagram: when (ISO 8601), where the sun stood, and the shadow loops
@@ -18,6 +21,27 @@ struct DiagramTime {
   std::string time;
   double azimuth_deg = 0, elevation_deg = 0;
   nlohmann::json shadows;
+};
+
+// The shadows of a scene lit by one of its suns alone, where the sun stands at given steps:
+// the times of a diagram, computed one by one (by `shadows --times`, or by tasks of a Dask
+// job, each a few times, penumbra.dask).
+class SunShadows {
+ public:
+  SunShadows(const Scene& scene, const SunPlacement& sun, ShadowOptions options,
+             ShadowJsonOptions json_options);
+  // returns the diagram's time when (ISO 8601): the shadow document of the scene lit from
+  // step.direction.
+  DiagramTime at(const studies::SunStep& step, const std::string& when);
+  // the warnings of the times computed so far, each once.
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+ private:
+  Scene stepped_;  // the scene with the sun as its only light, moved at each step
+  SunPlacement sun_;
+  ShadowOptions options_;
+  ShadowJsonOptions json_options_;
+  std::vector<std::string> warnings_;
 };
 
 // returns {"penumbra_shadow_diagram": 1, "sun": sun, "times": [{"azimuth_deg",

@@ -5,6 +5,7 @@
 // (SVG in plan view or one panel per face, PNG in plan view) drawn from the JSON.
 
 #include <cstddef>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -34,6 +35,17 @@ SunHoursHeader sun_hours_header(const Scene& scene, const studies::SunHoursPlan&
 // "polygons"}] (parts increasing in duration) instead of "lights".
 nlohmann::json sun_hours_json(const Scene& scene, const studies::SunHoursResult& result,
                               const SunHoursHeader& header, bool exact);
+
+// rebuilds the result that an exact document (sun_hours_json with exact) describes: the
+// inverse of sun_hours_json on its exact keys, for the merged document of a distributed run
+// (penumbra.dask), so that every output is then written as from one process. The steps come
+// from plan, the receiving faces from receivers (as SunHoursOptions::receivers); the
+// document's faces must be those, in order, each part's minutes a whole number of steps and
+// its polygons exact. Throws InputError(file, "faces[k]...") for a document that does not fit.
+studies::SunHoursResult sun_hours_from_json(const Scene& scene, const studies::SunHoursPlan& plan,
+                                            const std::optional<std::vector<Receiver>>& receivers,
+                                            const nlohmann::json& document,
+                                            const std::string& file);
 
 // returns the areas (m^2) of face r with at least h whole hours of sun, h = 0, 1, ..., hours
 // (the world areas the JSON gives, summed exactly before rounding).
