@@ -1,16 +1,22 @@
 """penumbra: exact shadows, illuminance and sun studies for polyhedral scenes.
 
-A scene is loaded from a scene file (docs/scene-format.md) or a dict of the same form::
+A scene is loaded from a scene file (docs/scene-format.md) or a dict of the same form; paths
+here are the repository's, as the tests run this example::
 
     >>> import penumbra, numpy as np
-    >>> scene = penumbra.Scene.load("fixtures/scenes/linear-fig5.json")
-    >>> shadows = scene.shadows()                      # exact, as `penumbra shadows --exact`
-    >>> face = shadows.face("ground", 0)
-    >>> face.lights["tube"].umbra.area                 # m^2
-    >>> face.lights["tube"].penumbra.to_shapely()      # shapely, in the face's frame
-    >>> face.lights["tube"].umbra.polygons[0].exact_outer   # tuples of fractions.Fraction
-    >>> points = np.array([[0, 0, 0, 0, 0, 1]], dtype=float)   # x, y, z, nx, ny, nz
-    >>> scene.illuminance(points)                      # (N,) lux, as `illuminance --points`
+    >>> scene = penumbra.Scene.load("fixtures/scenes/linear-fig5.json")   # a block, a tube
+    >>> shadows = scene.shadows()                  # exact, as `penumbra shadows --exact`
+    >>> floor = shadows.face("floor", 3)           # the floor's top face
+    >>> tube = floor.lights["tube"]
+    >>> tube.umbra.area, tube.penumbra.area        # m^2
+    (1.111111111111111, 9.888888888888888)
+    >>> tube.umbra.polygons[0].exact_outer[1]      # exact rationals
+    (Fraction(1, 3), Fraction(-1, 2), Fraction(0, 1))
+    >>> round(tube.penumbra.to_shapely().area, 9)  # shapely, in the face's frame
+    9.888888889
+    >>> points = np.array([[0, 0, 0, 0, 0, 1], [2, 2, 0, 0, 0, 1]], dtype=float)  # x, y, z, n
+    >>> scene.illuminance(points).round(6)         # lux, as `illuminance --points`
+    array([ 0.      , 14.248517])
 
 Sun studies (``Scene.sun_hours``, ``solar_position``) and the distributed runs of
 ``penumbra.dask`` give what the command line gives, value for value. Bad input raises

@@ -23,7 +23,7 @@ import threading
 
 import numpy as np
 
-from . import InputError, Scene, SunHours, Workplane, _penumbra
+from . import InputError, Scene, SunHours, Workplane, _input_error, _penumbra
 
 __all__ = ["sun_hours", "illuminance", "workplane", "shadow_times", "spatial_tiles",
            "client_for", "worker_loads"]
@@ -125,34 +125,40 @@ def _cores(client):
 
 def spatial_tiles(owners, count):
     """returns count (or fewer) lists of owner names: the owners (name, faces, box) ordered
-    along a grid of plan cells (row by row, so that neighbours share a tile) and cut into
-    runs of about equal numbers of faces."""
+    along a grid of plan cells (row by row, back and forth, so that neighbours share a tile)
+    and cut into runs of about equal numbers of faces; the tile holding the owner of largest
+    plan extent first (a ground under a city costs more than its few faces say, and starting
+    it first shortens the job)."""
     if not owners:
         return []
     centres = [((box[0] + box[3]) / 2, (box[1] + box[4]) / 2) for _, _, box in owners]
-    xs = [c[0] for c in centres]
-    ys = [c[1] for c in centres]
+    x0, y0 = min(c[0] for c in centres), min(c[1] for c in centres)
     side = max(1, math.ceil(math.sqrt(count)))
-    width = (max(xs) - min(xs)) / side or 1.0
-    depth = (max(ys) - min(ys)) / side or 1.0
+    width = (max(c[0] for c in centres) - x0) / side or 1.0
+    depth = (max(c[1] for c in centres) - y0) / side or 1.0
 
     def cell(k):
-        column = min(side - 1, int((centres[k][0] - min(xs)) / width))
-        row = min(side - 1, int((centres[k][1] - min(ys)) / depth))
+        column = min(side - 1, int((centres[k][0] - x0) / width))
+        row = min(side - 1, int((centres[k][1] - y0) / depth))
         return (row, column if row % 2 == 0 else side - 1 - column, owners[k][0])
+
+    def extent(k):
+        box = owners[k][2]
+        return (box[3] - box[0]) * (box[4] - box[1])
 
     order = sorted(range(len(owners)), key=cell)
     total = sum(max(1, owners[k][1]) for k in order)
     tiles, current, weight = [], [], 0
     for k in order:
-        current.append(owners[k][0])
+        current.append(k)
         weight += max(1, owners[k][1])
         if weight >= total * (len(tiles) + 1) / count and len(tiles) < count - 1:
             tiles.append(current)
             current = []
     if current:
         tiles.append(current)
-    return tiles
+    tiles.sort(key=lambda tile: -max(extent(k) for k in tile))
+    return [[owners[k][0] for k in tile] for tile in tiles]
 
 
 def _canonical(entry):
@@ -177,9 +183,18 @@ def sun_hours(scene_path, date=None, step="10min", client=None, tasks=None, retr
     path = os.path.abspath(os.fspath(scene_path))
     scene = Scene.load(path)
     chosen = study.pop("receivers", None)
-    owners = [o for o in scene.owners() if chosen is None or o[0] in set(chosen)]
+    owners = scene.owners()
+    if chosen is not None:
+        names = set(chosen)
+        missing = names - {o[0] for o in owners}
+        if missing:
+            raise _input_error("receivers", f"no object or part named '{sorted(missing)[0]}'",
+                               scene.file)
+        owners = [o for o in owners if o[0] in names]
     study = dict(study, date=date, step=step)
     scene.sun_steps(**study)  # bad dates, steps and suns fail here, before any task
+    if not owners:  # nothing receives: the (empty) study of one process
+        return scene.sun_hours(exact=exact, receivers=chosen, **study)
     with client_for(client) as running:
         tiles = spatial_tiles(owners, tasks or 4 * _cores(running))
         parts = _gather(running, _sun_hours_tile, [path] * len(tiles), tiles,

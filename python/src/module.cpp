@@ -2,6 +2,9 @@
 // penumbra.InputError (a ValueError) whose file, location and message are those the
 // command line prints; long computations release the GIL.
 
+#include <malloc.h>
+
+#include <cstdlib>
 #include <exception>
 
 #include <pybind11/pybind11.h>
@@ -11,6 +14,22 @@
 #include "penumbra/geometry/geometry_error.h"
 
 namespace py = pybind11;
+
+namespace {
+
+// Exact arithmetic allocates and frees millions of small numbers. Dask's nannies start their
+// workers with MALLOC_TRIM_THRESHOLD_=65536 (to hand memory back to the system sooner), with
+// which glibc returns the top of the heap at every free that empties 64 KiB of it: a system
+// call each time, and a sun-hours task ran 2.3 times slower (docs/performance.md, "Dask").
+// When that variable is set, the module raises the threshold to 256 MiB (glibc's default
+// adapts up to 32 MiB; a set variable turns the adaptation off, and so does mallopt).
+void relax_malloc_trimming() {
+  const char* given = std::getenv("MALLOC_TRIM_THRESHOLD_");
+  if (given != nullptr && std::strtoll(given, nullptr, 10) < (256 << 20))
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+}
+
+}  // namespace
 
 PYBIND11_MODULE(_penumbra, module) {
   module.doc() =
@@ -34,6 +53,7 @@ PYBIND11_MODULE(_penumbra, module) {
       PyErr_SetString(PyExc_ValueError, error.what());
     }
   });
+  relax_malloc_trimming();
   penumbra::python::bind_scene(module);
   penumbra::python::bind_studies(module);
 }

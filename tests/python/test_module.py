@@ -2,6 +2,7 @@
 rationals equal, doubles bitwise), the same illuminance, the errors as exceptions."""
 
 import contextlib
+import doctest
 import csv
 import io
 import json
@@ -15,7 +16,7 @@ import numpy as np
 import pytest
 
 import penumbra
-from conftest import BINARY, run_cli, scene_path
+from conftest import BINARY, SOURCE, run_cli, scene_path
 
 SHADOW_SCENES = ["linear-fig5.json", "mesh-courtyard.json", "shadow-cube-point.json",
                  "every-kind.json", "mesh-window.json"]
@@ -224,6 +225,12 @@ def test_long_calls_release_the_gil(city):
     # Held, the GIL would let the counter run one switch interval (5 ms) at most: 2 % of the
     # study; released, the counter shares the cores with the study's threads throughout.
     assert ticks > 0.1 * rate * seconds
+
+
+def test_the_module_example_runs(monkeypatch):
+    monkeypatch.chdir(SOURCE)  # the example's paths are the repository's
+    failed, attempted = doctest.testmod(penumbra, optionflags=doctest.NORMALIZE_WHITESPACE)
+    assert attempted >= 8 and failed == 0
 
 
 def test_help_documents_the_api():
