@@ -247,12 +247,6 @@ void write_basis(const std::filesystem::path& path, const BasisLuminances& basis
       {"compression", basis.options.compression},
       {"sigma", basis.options.sigma},
       {"objects", basis.object_names},
-      {"timings_s",
-       {{"mesh", basis.timings.mesh_s},
-        {"form_factors", basis.timings.form_factors_s},
-        {"direct", basis.timings.direct_s},
-        {"solve", basis.timings.solve_s},
-        {"compress", basis.timings.compress_s}}},
       {"lights", lights}};
   if (basis.camera)
     header["camera"] = {{"eye", vec(basis.camera->eye)}, {"target", vec(basis.camera->target)},

@@ -76,7 +76,8 @@ int run(Arguments& args) {
     std::cout << "\n";
   }
   const basis::BasisTimings& t = basis.timings;
-  std::cout << std::setprecision(3) << "time: mesh " << t.mesh_s << " s, form factors "
+  // times differ from run to run: on standard error, so that standard output does not
+  std::cerr << std::setprecision(3) << "time: mesh " << t.mesh_s << " s, form factors "
             << t.form_factors_s << " s, direct " << t.direct_s << " s, solve " << t.solve_s
             << " s, blocks " << t.compress_s << " s\n";
   return 0;

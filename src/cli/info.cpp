@@ -1,8 +1,10 @@
 // penumbra info SCENE: counts, and each object's faces with their exact planes.
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -98,7 +100,13 @@ int run_info(const std::string& path) {
         texts[k] = out.str();
       },
       64);
-  for (const std::string& text : texts) std::cout << text;
+  // in the documents' order (by name), whatever the order of the scene file
+  std::vector<std::size_t> order(scene.objects.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return scene.objects[a].face_owner() < scene.objects[b].face_owner();
+  });
+  for (std::size_t k : order) std::cout << texts[k];
   std::cout << "\n";
   for (const Light& light : scene.lights) {
     std::cout << "light " << light.name << " (" << light_kind(light) << ")";

@@ -40,8 +40,9 @@ int run(Arguments& args) {
   });
   std::cout << "patches " << solved.mesh.size() << ", form factor entries "
             << solved.form_factor_entries << ", sweeps " << solved.iterations << ", channels "
-            << solved.channels << "\n"
-            << std::setprecision(3) << "time: mesh " << solved.timings.mesh_s << " s, form factors "
+            << solved.channels << "\n";
+  // times differ from run to run: on standard error, so that standard output does not
+  std::cerr << std::setprecision(3) << "time: mesh " << solved.timings.mesh_s << " s, form factors "
             << solved.timings.form_factors_s << " s, direct " << solved.timings.direct_s
             << " s, solve " << solved.timings.solve_s << " s\n";
   return 0;

@@ -242,9 +242,11 @@ int run(const Arguments& args) {
     const double exposure = exposure_given > 0 ? exposure_given : auto_exposure(image.radiance);
     write_png(args.output, image.width, image.height, to_srgb8(image.radiance, exposure));
   }
-  if (args.fit.empty())
-    std::cout << std::setprecision(3) << "relit " << basis.mesh.size() << " patches in "
-              << relight_ms << " ms\n";
+  if (args.fit.empty()) {
+    std::cout << "relit " << basis.mesh.size() << " patches\n";
+    // times differ from run to run: on standard error, so that standard output does not
+    std::cerr << std::setprecision(3) << "time " << relight_ms << " ms\n";
+  }
   return 0;
 }
 

@@ -119,10 +119,11 @@ int run_render(const RenderArguments& args) {
             << ", illuminance evaluations " << image.evaluations << " (" << std::setprecision(3)
             << static_cast<double>(image.evaluations) / (image.width * image.height)
             << " per pixel), shadow boundary crossings " << image.boundary_crossings << "\n"
-            << "E " << minimum << " .. " << maximum << " lx on visible faces\n"
-            << "time " << seconds(start, finished) << " s (visibility and shadows "
-            << seconds(start, prepared) << " s, shading " << seconds(prepared, finished)
-            << " s), exposure " << exposure << " per cd/m^2\n";
+            << "E " << minimum << " .. " << maximum << " lx on visible faces, exposure " << exposure
+            << " per cd/m^2\n";
+  // times differ from run to run: on standard error, so that standard output does not
+  std::cerr << "time " << seconds(start, finished) << " s (visibility and shadows "
+            << seconds(start, prepared) << " s, shading " << seconds(prepared, finished) << " s)\n";
   if (args.isolux) {
     std::cout << "isolux levels";
     for (double level : levels) std::cout << ' ' << render::level_text(level);

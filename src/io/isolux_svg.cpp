@@ -88,11 +88,14 @@ void write_isolux_svg(std::ostream& out, const Scene& scene,
   }
   out << "</g>\n";
 
-  // The plan: every object's outline seen from above, lower objects first.
+  // The plan: every object's outline seen from above, lower objects first, then by name (the
+  // drawing does not depend on the order of the scene file).
   std::vector<std::size_t> order(scene.objects.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return scene.objects[a].solid.bbox().zmax() < scene.objects[b].solid.bbox().zmax();
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const double za = scene.objects[a].solid.bbox().zmax(),
+                 zb = scene.objects[b].solid.bbox().zmax();
+    return za != zb ? za < zb : scene.objects[a].name < scene.objects[b].name;
   });
   out << "<g id=\"plan\" fill=\"none\" stroke=\"#303030\" stroke-width=\"1.2\">\n";
   std::map<std::string, std::pair<illuminance::PlanPoint, double>>
