@@ -2,11 +2,13 @@
 // document (DESIGN.md, "Shadow loops output"), illuminance at points and on a work plane.
 
 #include <array>
+#include <map>
 #include <set>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include <CGAL/Bbox_3.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 

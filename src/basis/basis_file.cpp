@@ -1,8 +1,10 @@
 #include "penumbra/basis/basis_file.h"
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <numeric>
 
 #include "penumbra/base/atomic_file.h"
 #include "penumbra/base/input_error.h"
@@ -171,10 +173,23 @@ void write_basis(const std::filesystem::path& path, const BasisLuminances& basis
   };
 
   add("vertices", array_of("f64", mesh.vertices().data()->data(), vertex_count, 3));
+  // the objects by name, each patch's object as its place there: the file does not depend on
+  // the order of the scene's objects (docs/reliability.md)
+  std::vector<std::size_t> by_name(basis.object_names.size());
+  std::iota(by_name.begin(), by_name.end(), 0);
+  std::sort(by_name.begin(), by_name.end(), [&](std::size_t a, std::size_t b) {
+    return basis.object_names[a] < basis.object_names[b];
+  });
+  std::vector<std::uint32_t> place(by_name.size());
+  std::vector<std::string> names;
+  for (std::size_t k = 0; k < by_name.size(); ++k) {
+    place[by_name[k]] = static_cast<std::uint32_t>(k);
+    names.push_back(basis.object_names[by_name[k]]);
+  }
   std::vector<std::uint32_t> object, face, offsets{0}, indices;
   std::vector<double> centre, normal, area, reflectance;
   for (const Patch& patch : mesh.patches()) {
-    object.push_back(patch.object);
+    object.push_back(patch.object < place.size() ? place[patch.object] : patch.object);
     face.push_back(patch.face);
     centre.insert(centre.end(), patch.centre.begin(), patch.centre.end());
     normal.insert(normal.end(), patch.normal.begin(), patch.normal.end());
@@ -246,7 +261,7 @@ void write_basis(const std::filesystem::path& path, const BasisLuminances& basis
        {{"tolerance", basis.options.radiosity.tolerance}, {"iterations", basis.iterations}}},
       {"compression", basis.options.compression},
       {"sigma", basis.options.sigma},
-      {"objects", basis.object_names},
+      {"objects", names},
       {"lights", lights}};
   if (basis.camera)
     header["camera"] = {{"eye", vec(basis.camera->eye)}, {"target", vec(basis.camera->target)},

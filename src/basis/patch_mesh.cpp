@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <stdexcept>
 
 #include "penumbra/scene/scene.h"
@@ -72,7 +73,14 @@ PatchMesh PatchMesh::subdivide(const Scene& scene, double patch_size) {
   if (!(patch_size > 0) || !std::isfinite(patch_size))
     throw std::invalid_argument("patch size must be positive and finite");
   PatchMesh mesh;
-  for (std::size_t object = 0; object < scene.objects.size(); ++object) {
+  // objects by name: the patches' order (and so the form factors' seeds, which follow it) does
+  // not depend on the order of the scene file (docs/reliability.md)
+  std::vector<std::size_t> by_name(scene.objects.size());
+  std::iota(by_name.begin(), by_name.end(), 0);
+  std::sort(by_name.begin(), by_name.end(), [&](std::size_t a, std::size_t b) {
+    return scene.objects[a].name < scene.objects[b].name;
+  });
+  for (const std::size_t object : by_name) {
     const Object& body = scene.objects[object];
     const Material& material = scene.materials[body.material];
     std::array<double, 3> reflectance;
@@ -175,7 +183,7 @@ void PatchMesh::index() {
   first_grid_.clear();
   for (std::size_t g = 0; g < grids_.size(); ++g)
     if (grids_[g].face == 0) {
-      first_grid_.resize(grids_[g].object + 1, 0);
+      if (first_grid_.size() <= grids_[g].object) first_grid_.resize(grids_[g].object + 1, 0);
       first_grid_[grids_[g].object] = g;
     }
 }
