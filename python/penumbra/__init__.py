@@ -8,15 +8,19 @@ here are the repository's, as the tests run this example::
     >>> shadows = scene.shadows()                  # exact, as `penumbra shadows --exact`
     >>> floor = shadows.face("floor", 3)           # the floor's top face
     >>> tube = floor.lights["tube"]
-    >>> tube.umbra.area, tube.penumbra.area        # m^2
-    (1.111111111111111, 9.888888888888888)
     >>> tube.umbra.polygons[0].exact_outer[1]      # exact rationals
     (Fraction(1, 3), Fraction(-1, 2), Fraction(0, 1))
+    >>> tube.umbra.area, tube.penumbra.area        # m^2: 4/3 x 5/6 = 10/9, and 11 - 10/9
+    (1.111111111111111, 9.888888888888888)
     >>> round(tube.penumbra.to_shapely().area, 9)  # shapely, in the face's frame
     9.888888889
     >>> points = np.array([[0, 0, 0, 0, 0, 1], [2, 2, 0, 0, 0, 1]], dtype=float)  # x, y, z, n
-    >>> scene.illuminance(points).round(6)         # lux, as `illuminance --points`
-    array([ 0.      , 14.248517])
+    >>> lux = scene.illuminance(points)            # lux, as `illuminance --points`
+    >>> lux[0], bool(lux[1] > 0)                   # in the umbra; beyond the penumbra
+    (0.0, True)
+
+(The umbra is the rectangle [-1/2, 1/3] x [-1/2, 5/6] and the penumbra the rest of a hexagon of
+area 11, derived by hand in tests/shadow/linear_figures_test.cpp, Nishita 1985 figure 5.)
 
 Sun studies (``Scene.sun_hours``, ``solar_position``) and the distributed runs of
 ``penumbra.dask`` give what the command line gives, value for value. Bad input raises
@@ -39,6 +43,11 @@ __all__ = ["Scene", "Shadows", "FaceShadows", "LightShadows", "PolygonSet", "Pol
 
 Light = namedtuple("Light", "name kind")
 Light.__doc__ = "A light of a scene: its name and kind (point, linear or directional)."
+
+
+def _study(date, step, to, light, site, utc_offset):
+    """the arguments of a sun study, as the native functions take them."""
+    return dict(date=date, step=step, to=to, light=light, site=site, utc_offset=utc_offset)
 
 
 def _input_error(location, message, file=""):
@@ -159,8 +168,7 @@ class Scene:
         """returns the sun-hours study (SunHours) of `penumbra sun-hours`: every face cut into
         parts by the time the sun reaches them, dates YYYY-MM-DD, step like "10min" or "1h",
         site "LAT,LON[,ELEV]" for a scene whose sun is a fixed direction."""
-        arguments = dict(date=date, step=step, to=to, light=light, site=site,
-                         utc_offset=utc_offset)
+        arguments = _study(date, step, to, light, site, utc_offset)
         document, warnings = _penumbra.sun_hours_document(self._native, arguments, receivers,
                                                           exact)
         return SunHours(document, warnings)
@@ -169,9 +177,7 @@ class Scene:
                   utc_offset=None):
         """returns the steps of a sun study: a list of (time, azimuth_deg, elevation_deg, dx,
         dy, dz, up), (dx, dy, dz) the direction sunlight travels in the model frame."""
-        arguments = dict(date=date, step=step, to=to, light=light, site=site,
-                         utc_offset=utc_offset)
-        return _penumbra.sun_steps(self._native, arguments)
+        return _penumbra.sun_steps(self._native, _study(date, step, to, light, site, utc_offset))
 
     def __repr__(self):
         return (f"Scene({self.file!r}: {len(self.objects)} objects, "

@@ -37,6 +37,12 @@ class SceneHandle {
 std::optional<std::vector<Receiver>> chosen_receivers(const Scene& scene,
                                                       const pybind11::object& receivers);
 
+// returns the options of compute_shadows: the faces receivers names (chosen_receivers) and the
+// culling of `penumbra shadows` (--range-fraction, --full-scale-lux, --range-lux).
+ShadowOptions shadow_options(const Scene& scene, const pybind11::object& receivers,
+                             double range_fraction, double full_scale_lux,
+                             std::optional<double> range_lux);
+
 void bind_scene(pybind11::module_& module);
 void bind_studies(pybind11::module_& module);
 

@@ -50,6 +50,16 @@ std::optional<std::vector<Receiver>> chosen_receivers(const Scene& scene,
   return faces_of_objects(scene, objects);
 }
 
+ShadowOptions shadow_options(const Scene& scene, const py::object& receivers, double range_fraction,
+                             double full_scale_lux, std::optional<double> range_lux) {
+  ShadowOptions options;
+  options.range_fraction = range_fraction;
+  options.full_scale_lux = full_scale_lux;
+  options.range_lux = range_lux;
+  options.receivers = chosen_receivers(scene, receivers);
+  return options;
+}
+
 namespace {
 
 std::shared_ptr<SceneHandle> load(const std::string& path) {
@@ -96,17 +106,10 @@ py::tuple shadow_document(const SceneHandle& handle, const std::optional<std::st
                           const py::object& receivers, bool exact, double range_fraction,
                           double full_scale_lux, std::optional<double> range_lux) {
   const Scene& scene = handle.scene();
-  ShadowOptions options;
+  ShadowOptions options =
+      shadow_options(scene, receivers, range_fraction, full_scale_lux, range_lux);
   options.light = light;
-  options.range_fraction = range_fraction;
-  options.full_scale_lux = full_scale_lux;
-  options.range_lux = range_lux;
-  options.receivers = chosen_receivers(scene, receivers);
-  io::ShadowJsonOptions json_options;
-  json_options.exact = exact;
-  json_options.range_fraction = range_fraction;
-  json_options.full_scale_lux = full_scale_lux;
-  json_options.range_lux = range_lux;
+  const io::ShadowJsonOptions json_options = io::json_options_of(options, exact);
   nlohmann::json document;
   std::vector<std::string> warnings;
   {

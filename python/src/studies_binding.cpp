@@ -114,16 +114,9 @@ py::tuple sun_shadow_documents(const SceneHandle& handle, const std::string& lig
                                std::optional<double> range_lux) {
   const Scene& scene = handle.scene();
   const SunPlacement& sun = studies::choose_sun(scene, scene.file.string(), light);
-  ShadowOptions options;
-  options.range_fraction = range_fraction;
-  options.full_scale_lux = full_scale_lux;
-  options.range_lux = range_lux;
-  options.receivers = chosen_receivers(scene, receivers);
-  io::ShadowJsonOptions json_options;
-  json_options.exact = exact;
-  json_options.range_fraction = range_fraction;
-  json_options.full_scale_lux = full_scale_lux;
-  json_options.range_lux = range_lux;
+  const ShadowOptions options =
+      shadow_options(scene, receivers, range_fraction, full_scale_lux, range_lux);
+  const io::ShadowJsonOptions json_options = io::json_options_of(options, exact);
   std::vector<nlohmann::json> documents;
   std::vector<std::string> warnings;
   {

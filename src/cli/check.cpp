@@ -34,17 +34,13 @@ int run_check(const std::string& scene_path, const std::string& golden_path,
 
   // Recompute as the golden file was computed: its culling and its lights.
   ShadowOptions options;
-  io::ShadowJsonOptions json_options;
-  json_options.exact = true;
   if (golden.contains("culling") && golden["culling"].is_object()) {
     const auto& culling = golden["culling"];
     if (culling.contains("range_lux")) options.range_lux = culling["range_lux"].get<double>();
     options.range_fraction = culling.value("range_fraction", options.range_fraction);
     options.full_scale_lux = culling.value("full_scale_lux", options.full_scale_lux);
   }
-  json_options.range_fraction = options.range_fraction;
-  json_options.full_scale_lux = options.full_scale_lux;
-  json_options.range_lux = options.range_lux;
+  const io::ShadowJsonOptions json_options = io::json_options_of(options, true);
   std::set<std::string> lights;
   if (golden.contains("lights") && golden["lights"].is_array())
     for (const auto& light : golden["lights"]) lights.insert(light.value("name", ""));

@@ -113,11 +113,8 @@ int run_shadow_diagram(const Scene& scene, const DiagramArguments& arguments) {
   for (const sun::ZonedInstant& t : times) instants.push_back(t.utc);
   const std::vector<studies::SunStep> steps = studies::sun_steps(sun, scene.north_deg, instants);
 
-  io::ShadowJsonOptions json_options;
-  json_options.exact = arguments.exact;
-  json_options.range_fraction = arguments.options.range_fraction;
-  json_options.full_scale_lux = arguments.options.full_scale_lux;
-  json_options.range_lux = arguments.options.range_lux;
+  const io::ShadowJsonOptions json_options =
+      io::json_options_of(arguments.options, arguments.exact);
   std::vector<std::size_t> up;  // the steps drawn
   std::vector<std::string> when(steps.size()), skipped;
   for (std::size_t k = 0; k < steps.size(); ++k) {

@@ -79,11 +79,7 @@ int run_shadows(const ShadowsArguments& arguments) {
   for (const std::string& warning : result.warnings)
     std::cerr << "penumbra: warning: " << warning << "\n";
 
-  io::ShadowJsonOptions json_options;
-  json_options.exact = arguments.exact;
-  json_options.range_fraction = options.range_fraction;
-  json_options.full_scale_lux = options.full_scale_lux;
-  json_options.range_lux = options.range_lux;
+  const io::ShadowJsonOptions json_options = io::json_options_of(options, arguments.exact);
   // Every output streams face by face: the document is never held whole.
   std::vector<std::unique_ptr<AtomicFile>> files;
   std::vector<std::unique_ptr<io::ShadowDocumentSink>> writers;

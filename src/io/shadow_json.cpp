@@ -310,6 +310,15 @@ std::string shadow_face_text(const Scene& scene, const ShadowResult& result, std
   return text;
 }
 
+ShadowJsonOptions json_options_of(const ShadowOptions& options, bool exact) {
+  ShadowJsonOptions json_options;
+  json_options.exact = exact;
+  json_options.range_fraction = options.range_fraction;
+  json_options.full_scale_lux = options.full_scale_lux;
+  json_options.range_lux = options.range_lux;
+  return json_options;
+}
+
 json shadow_json(const Scene& scene, const ShadowResult& result, const ShadowJsonOptions& options) {
   json document = shadow_header_json(scene, result, options);
   json faces = json::array();

@@ -2,6 +2,7 @@
 results equal the single-process run byte for byte, each worker loads a scene once, a killed
 worker does not change the result, and a penumbra error fails the job with its message."""
 
+import json
 import os
 import signal
 import subprocess
@@ -128,3 +129,24 @@ def test_the_command_line_on_dask_reports_bad_input(client, city, tmp_path):
     status, _, errors = run("sun-hours", city, "--date", "2026-03-21", "--step", "1h",
                             "--dask", "tcp://127.0.0.1:9", "-o", tmp_path / "h.json", env=env)
     assert status == 2 and "--dask" in errors and not (tmp_path / "h.json").exists()
+
+
+def test_awkward_names_merge_in_the_documents_order(client, city, tmp_path):
+    # owners named with non-ASCII letters, commas, quotes and spaces: the merge sorts face
+    # entries by the names' UTF-8 bytes, as the engine's std::string order does
+    document = json.loads(city.read_text())
+    names = ["Zürich, Bau 1", "école \"A\"", "ßtraße", "a,b", "Ωmega", "building 'x'",
+             "日本", "Z", "z", "ä", "A b", "№7"]
+    for obj, name in zip([o for o in document["objects"] if o["name"] != "ground"], names):
+        obj["name"] = name
+    awkward = tmp_path / "awkward city.json"
+    awkward.write_text(json.dumps(document, ensure_ascii=False), encoding="utf-8")
+    single = penumbra.Scene.load(awkward).sun_hours(date="2026-03-21", step="1h", exact=True)
+    spread = pd.sun_hours(awkward, date="2026-03-21", step="1h", client=client, exact=True,
+                          tasks=5)
+    assert spread.to_json() == single.to_json()
+    owners = [face["object"] for face in single.faces]
+    assert set(names) <= set(owners)
+    chosen = pd.sun_hours(awkward, date="2026-03-21", step="1h", client=client,
+                          receivers=["日本", "a,b"])
+    assert sorted({face["object"] for face in chosen.faces}) == ["a,b", "日本"]

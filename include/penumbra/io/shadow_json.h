@@ -24,6 +24,10 @@ struct ShadowJsonOptions {
   std::optional<double> range_lux;
 };
 
+// returns the document options of a result computed with options: its culling recorded (so
+// that `check` recomputes alike), with exact rationals on request.
+ShadowJsonOptions json_options_of(const ShadowOptions& options, bool exact);
+
 // builds the document for result, computed from scene.
 nlohmann::json shadow_json(const Scene& scene, const ShadowResult& result,
                            const ShadowJsonOptions& options);
