@@ -13,6 +13,20 @@ if(PENUMBRA_SANITIZE)
   string(REPLACE ";" "," _penumbra_sanitizers "${PENUMBRA_SANITIZE}")
   add_compile_options(-fsanitize=${_penumbra_sanitizers} -fno-omit-frame-pointer)
   add_link_options(-fsanitize=${_penumbra_sanitizers})
+  # A report is a failure: undefined behaviour stops the program as an address error does.
+  if("undefined" IN_LIST PENUMBRA_SANITIZE)
+    add_compile_options(-fno-sanitize-recover=undefined)
+    add_link_options(-fno-sanitize-recover=undefined)
+  endif()
+endif()
+
+# libFuzzer's coverage instrumentation in every target, the library's included; the fuzz
+# programs themselves link with -fsanitize=fuzzer (tests/fuzz/CMakeLists.txt).
+if(PENUMBRA_BUILD_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "PENUMBRA_BUILD_FUZZ needs clang (CMAKE_CXX_COMPILER=clang++): libFuzzer is clang's")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link)
 endif()
 
 if(PENUMBRA_USE_CCACHE)

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <numeric>
 
 #include "penumbra/base/atomic_file.h"
 #include "penumbra/base/input_error.h"
+#include "penumbra/base/input_file.h"
 
 namespace penumbra::basis {
 
@@ -61,20 +61,14 @@ class Reader {
   }
 
   void load() {
-    std::ifstream in(path_, std::ios::binary);
-    if (!in) fail("", "cannot open the basis file");
-    std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string content = read_input_file(path_, "basis file", file_limits::basis);
     if (content.size() < 16 || std::memcmp(content.data(), kMagic, 8) != 0)
       fail("", "not a penumbra basis file (.pbl): wrong magic");
     std::uint64_t header_length = 0;
     std::memcpy(&header_length, content.data() + 8, 8);
     if (header_length > content.size() - 16)
       fail("header", "header length beyond the end of the file");
-    try {
-      header_ = nlohmann::json::parse(content.substr(16, header_length));
-    } catch (const nlohmann::json::exception& error) {
-      fail("header", std::string("malformed JSON: ") + error.what());
-    }
+    header_ = parse_input_json(content.substr(16, header_length), path_.string() + ": header");
     if (header_.value("version", 0) != kVersion)
       fail("version",
            "unsupported basis file version (this program reads " + std::to_string(kVersion) + ")");
@@ -283,7 +277,9 @@ void write_basis(const std::filesystem::path& path, const BasisLuminances& basis
   });
 }
 
-BasisLuminances read_basis(const std::filesystem::path& path) {
+namespace {
+
+BasisLuminances read_checked_basis(const std::filesystem::path& path) {
   Reader reader(path);
   reader.load();
   const nlohmann::json& header = reader.header();
@@ -396,9 +392,24 @@ BasisLuminances read_basis(const std::filesystem::path& path) {
     c.fov_deg = camera.value("fov_deg", 60.0);
     c.width = camera.value("width", 640);
     c.height = camera.value("height", 480);
+    if (!(c.fov_deg > 0 && c.fov_deg < 180)) reader.fail("camera.fov_deg", "must lie in (0, 180)");
+    if (const std::string problem = image_size_problem(c.width, c.height); !problem.empty())
+      reader.fail("camera", problem);
     basis.camera = c;
   }
   return basis;
+}
+
+}  // namespace
+
+BasisLuminances read_basis(const std::filesystem::path& path) {
+  try {
+    return read_checked_basis(path);
+  } catch (const nlohmann::json::exception& error) {
+    // a header field of the wrong type, read with a default (json::value)
+    throw InputError(path.string(), "header",
+                     std::string("a field has the wrong type: ") + error.what());
+  }
 }
 
 }  // namespace penumbra::basis

@@ -6,6 +6,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "penumbra/base/input_error.h"
 #include "penumbra/scene/scene.h"
 
 namespace penumbra::basis {
@@ -73,6 +74,7 @@ PatchMesh PatchMesh::subdivide(const Scene& scene, double patch_size) {
   if (!(patch_size > 0) || !std::isfinite(patch_size))
     throw std::invalid_argument("patch size must be positive and finite");
   PatchMesh mesh;
+  std::uint64_t cells = 0;
   // objects by name: the patches' order (and so the form factors' seeds, which follow it) does
   // not depend on the order of the scene file (docs/reliability.md)
   std::vector<std::size_t> by_name(scene.objects.size());
@@ -110,6 +112,13 @@ PatchMesh PatchMesh::subdivide(const Scene& scene, double patch_size) {
       grid.v0 = lo[1];
       grid.du = (hi[0] - lo[0]) / grid.nu;
       grid.dv = (hi[1] - lo[1]) / grid.nv;
+      // the grid's cells bound the patches: refused over the limit before they are made
+      cells += static_cast<std::uint64_t>(grid.nu) * static_cast<std::uint64_t>(grid.nv);
+      if (cells > max_patches)
+        throw InputError("<command line>", "--patch-size",
+                         "a patch size of " + std::to_string(patch_size) + " m makes more than " +
+                             std::to_string(max_patches) +
+                             " patches: give a larger one (docs/reliability.md, \"Limits\")");
       grid.cells.assign(static_cast<std::size_t>(grid.nu) * grid.nv, -1);
       // vertices of this face, shared between its cells: keyed on their frame coordinates
       // rounded to a billionth of a cell (clipping the same edge twice gives equal doubles;

@@ -1,12 +1,12 @@
 // penumbra check SCENE --golden loops.json: recompute the shadows and compare them
 // exactly (rational coordinates) with a golden shadow loops file.
 
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <set>
 
 #include "penumbra/base/input_error.h"
+#include "penumbra/base/input_file.h"
 #include "penumbra/io/shadow_compare.h"
 #include "penumbra/io/shadow_json.h"
 #include "penumbra/scene/load_scene.h"
@@ -18,13 +18,7 @@ namespace penumbra::cli {
 namespace {
 
 nlohmann::json read_golden(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open the golden file");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& error) {
-    throw InputError(path, "", std::string("not valid JSON: ") + error.what());
-  }
+  return parse_input_json(read_input_file(path, "golden file", file_limits::document), path);
 }
 
 int run_check(const std::string& scene_path, const std::string& golden_path,

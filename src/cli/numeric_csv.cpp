@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "penumbra/base/input_error.h"
+#include "penumbra/base/input_file.h"
 
 namespace penumbra::cli {
 
@@ -36,6 +37,7 @@ std::vector<NumericRow> read_numeric_csv(const std::string& file,
                                          const std::string& what) {
   std::string expected;
   for (const std::string& name : names) expected += (expected.empty() ? "" : ",") + name;
+  check_input_file(file, what, file_limits::table);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, "", "cannot open the " + what);
   std::string line;

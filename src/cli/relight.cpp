@@ -237,6 +237,9 @@ int run(const Arguments& args) {
     Camera camera = *basis.camera;
     if (args.width > 0) camera.width = args.width;
     if (args.height > 0) camera.height = args.height;
+    if (const std::string problem = image_size_problem(camera.width, camera.height);
+        !problem.empty())
+      throw InputError("<command line>", "--width, --height", problem);
     const basis::GouraudImage image =
         basis::gouraud_image(basis.mesh, relit.vertex_luminance, camera);
     const double exposure = exposure_given > 0 ? exposure_given : auto_exposure(image.radiance);
@@ -272,8 +275,10 @@ void register_relight(CLI::App& app) {
   verb->add_option("--fit-intervals", args->fit_intervals, "control intervals over 0-180 degrees")
       ->capture_default_str();
   verb->add_option("--exposure", args->exposure, "auto or 1/(cd/m^2)")->capture_default_str();
-  verb->add_option("--width", args->width, "image width (default: the camera's)");
-  verb->add_option("--height", args->height, "image height (default: the camera's)");
+  verb->add_option("--width", args->width, "image width (default: the camera's)")
+      ->check(CLI::Range(1, max_image_side));
+  verb->add_option("--height", args->height, "image height (default: the camera's)")
+      ->check(CLI::Range(1, max_image_side));
   verb->callback([args] { exit_status() = run(*args); });
 }
 

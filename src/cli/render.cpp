@@ -83,6 +83,8 @@ int run_render(const RenderArguments& args) {
   Camera camera = *scene.camera;
   if (args.width > 0) camera.width = args.width;
   if (args.height > 0) camera.height = args.height;
+  if (const std::string problem = image_size_problem(camera.width, camera.height); !problem.empty())
+    throw InputError("<command line>", "--width, --height", problem);
 
   const auto start = std::chrono::steady_clock::now();
   const render::ScanlineRenderer renderer(scene, camera);
@@ -154,9 +156,9 @@ void register_render(CLI::App& app) {
                    "isolux levels in lux, e.g. 100,200,500 (default: chosen)");
   verb->add_option("--values", args->values, "CSV of px,py,object,face,E,L per pixel");
   verb->add_option("--width", args->width, "image width in pixels (default: the camera's)")
-      ->check(CLI::Range(1, 16384));
+      ->check(CLI::Range(1, max_image_side));
   verb->add_option("--height", args->height, "image height in pixels (default: the camera's)")
-      ->check(CLI::Range(1, 16384));
+      ->check(CLI::Range(1, max_image_side));
   verb->callback([args] { exit_status() = run_render(*args); });
 }
 

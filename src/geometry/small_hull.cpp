@@ -71,7 +71,10 @@ std::vector<std::vector<std::size_t>> small_hull(const std::vector<Point>& point
       }
 
   std::vector<std::vector<std::size_t>> cycles;
-  for (const auto& [mask, inside] : faces) {
+  for (const auto& face : faces) {
+    // named copies, not a structured binding: the lambda below captures them (C++17).
+    const auto mask = face.first;
+    const auto inside = face.second;
     std::vector<std::size_t> on;
     for (std::size_t m = 0; m < n; ++m)
       if (mask >> m & 1) on.push_back(m);

@@ -1,6 +1,7 @@
 #include "penumbra/photometry/eulumdat.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "number_format.h"
 #include "penumbra/base/input_error.h"
@@ -36,7 +37,8 @@ class LineReader {
   }
   int integer(const std::string& what) {
     const double value = number(what);
-    if (value != static_cast<double>(static_cast<long>(value)))
+    // the range first: converting 2e115 to an integer is undefined (found by fuzzing)
+    if (!(std::fabs(value) <= 1e9) || value != std::floor(value))
       fail(what + " must be an integer, found " + format_number(value));
     return static_cast<int>(value);
   }

@@ -199,7 +199,8 @@ IesFile parse_ies(const std::string& text, const std::filesystem::path& file) {
                 ".." + detail::format_number(ies.horizontal_deg.back()) +
                 " are not an LM-63 range for " + type +
                 (ies.photometric_type == 1 ? " (0; 0-90; 0-180; 90-270; 0-360)"
-                                           : " (-90..90, or 0..90 for lateral symmetry)"));
+                                           : " (-90..90, or 0..90 for lateral symmetry; at "
+                                             "least two angles)"));
 
   for (int h = 0; h < horizontal_count; ++h) {
     ies.candela.push_back(tokens.numbers(

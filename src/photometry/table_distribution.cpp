@@ -52,7 +52,9 @@ std::optional<Symmetry> horizontal_symmetry(const std::vector<double>& h, Photom
   const double first = h.front(), last = h.back();
   if (type != PhotometricType::c) {
     // LM-63 types A and B: lateral angles -90..90, or 0..90 for a laterally
-    // symmetric luminaire (mirror H -> -H, which is C -> -C in the C-gamma frame).
+    // symmetric luminaire (mirror H -> -H, which is C -> -C in the C-gamma frame). One
+    // lateral angle is no range: nothing to interpolate across (found by fuzzing).
+    if (h.size() < 2) return std::nullopt;
     if (first == 0 && last <= 90) return Symmetry::bilateral_c0_c180;
     if (first >= -90 && first < 0 && last <= 90) return Symmetry::none;
     return std::nullopt;

@@ -1,17 +1,16 @@
 #include "bezier_objects.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "penumbra/base/input_error.h"
+#include "penumbra/base/input_file.h"
 #include "planar_faces.h"
 
 namespace penumbra::detail {
 
 std::vector<BezierPatch> read_bezier_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string(), "", "cannot open the patch file");
+  std::istringstream in(read_input_file(path, "patch file", file_limits::patches));
   std::size_t line_number = 0;
   std::string line;
   // returns the next line with content, split into numbers; fails at the end of the file.

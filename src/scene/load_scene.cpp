@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <exception>
-#include <fstream>
 #include <functional>
 #include <set>
 #include <sstream>
@@ -11,6 +10,7 @@
 #include "json_cursor.h"
 #include "mesh_parts.h"
 #include "penumbra/base/input_error.h"
+#include "penumbra/base/input_file.h"
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/geometry_error.h"
 #include "penumbra/scene/model_import.h"
@@ -22,6 +22,8 @@ namespace {
 using detail::JsonCursor;
 
 constexpr int kDefaultSphereSegments = 16;
+// the finest sphere: 512 meridians by 256 bands, 130,000 points (docs/reliability.md, "Limits")
+constexpr int kMaxSphereSegments = 512;
 // The default distance (m) within which the tessellation of a Bézier patch object lies.
 constexpr double kBezierTolerance = 1e-3;
 // The most triangles the tessellation of one Bézier patch object may have.
@@ -229,6 +231,8 @@ class SceneReader {
       if (auto s = shape.find("segments")) {
         sphere.segments = s->positive_integer();
         if (sphere.segments < 4) s->fail("a sphere needs at least 4 segments");
+        if (sphere.segments > kMaxSphereSegments)
+          s->fail("a sphere has at most " + std::to_string(kMaxSphereSegments) + " segments");
       }
       defer([sphere] {
         return ConvexPolyhedron::hull(
@@ -507,6 +511,9 @@ class SceneReader {
     }
     if (auto width = cursor.find("width")) camera.width = width->positive_integer();
     if (auto height = cursor.find("height")) camera.height = height->positive_integer();
+    if (const std::string problem = image_size_problem(camera.width, camera.height);
+        !problem.empty())
+      cursor.fail(problem);
     scene_.camera = camera;
   }
 
@@ -517,33 +524,10 @@ class SceneReader {
   std::set<std::string> light_names_;
 };
 
-// returns "line L, column C" of a byte offset in text.
-std::string line_and_column(const std::string& text, std::size_t byte) {
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(file.string(), line_and_column(text, e.byte == 0 ? 0 : e.byte - 1),
-                     std::string("malformed JSON: ") + e.what());
-  } catch (const nlohmann::json::exception& e) {
-    // Numbers too large for a double (1e999) are refused while parsing, without a position.
-    throw InputError(file.string(), "", std::string("malformed JSON: ") + e.what());
-  }
+  const nlohmann::json document = parse_input_json(text, file.string());
   Scene scene;
   scene.file = file;
   SceneReader(scene, file.string()).read(document);
@@ -551,12 +535,7 @@ Scene parse_scene(const std::string& text, const std::filesystem::path& file) {
 }
 
 Scene load_scene(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string(), "", "cannot open the scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path.string(), "", "cannot read the scene file");
-  return parse_scene(text.str(), path);
+  return parse_scene(read_input_file(path, "scene file", file_limits::scene), path);
 }
 
 const Object* Scene::find_object(const std::string& name) const {

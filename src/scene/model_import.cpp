@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "penumbra/base/input_error.h"
+#include "penumbra/base/input_file.h"
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
 #include "planar_faces.h"
@@ -252,6 +253,33 @@ void whole_obj_names(const std::filesystem::path& path, std::vector<PartSource>&
   }
 }
 
+// checks a PLY file's header before Assimp reads it: "ply", then only the header's keywords
+// (format, comment, obj_info, element, property) up to "end_header". Debian's Assimp 5.2.4
+// reads a header with any other line forever (found by fuzzing,
+// tests/fuzz/regressions/model/ply-unknown-header-line.bin); a real
+// header is a few hundred bytes, so one without end_header in its first megabyte is refused.
+void check_ply_header(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::size_t bytes = 0;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    bytes += line.size() + 1;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::string keyword = line.substr(0, line.find(' '));
+    if (number == 1 ? line != "ply"
+                    : keyword != "format" && keyword != "comment" && keyword != "obj_info" &&
+                          keyword != "element" && keyword != "property" && line != "end_header")
+      throw InputError(file, "line " + std::to_string(number),
+                       number == 1 ? "not a PLY file: the first line must be \"ply\""
+                                   : "not a PLY header line (format, comment, obj_info, element, "
+                                     "property or end_header expected)");
+    if (line == "end_header") return;
+    if (bytes > (1u << 20)) break;
+  }
+  throw InputError(file, "", "a PLY header without end_header in its first megabyte");
+}
+
 // makes the part names unique: parts sharing a name whose parents have distinct names
 // are qualified by them ("IfcWindow-1/IfcMappedItem"); others sharing a name are numbered
 // #0, #1, ... in file order.
@@ -304,11 +332,7 @@ std::string lower(std::string text) {
 
 const aiScene* read_scene(Assimp::Importer& importer, const std::filesystem::path& path) {
   const std::string file = path.string();
-  std::error_code error;
-  if (!std::filesystem::exists(path, error))
-    throw InputError(file, "", "cannot open the model file: it does not exist");
-  if (std::filesystem::is_directory(path, error))
-    throw InputError(file, "", "cannot open the model file: it is a directory");
+  check_input_file(path, "model file", file_limits::model);
   if (!std::ifstream(path, std::ios::binary))
     throw InputError(file, "", "cannot open the model file: it cannot be read");
   const std::string extension = lower(path.extension().string());
@@ -319,6 +343,7 @@ const aiScene* read_scene(Assimp::Importer& importer, const std::filesystem::pat
                          "...; docs/scene-format.md)");
   // No post-processing step that moves vertices: JoinIdenticalVertices merges within a few
   // ulps; equal points are merged exactly after snapping instead (planar_faces.cpp).
+  if (extension == ".ply") check_ply_header(path);
   const aiScene* scene =
       importer.ReadFile(file, aiProcess_Triangulate | aiProcess_ValidateDataStructure);
   if (!scene || !scene->mRootNode)
@@ -407,6 +432,17 @@ ImportedModel import_model(const std::filesystem::path& path, const Placement& p
   collect_parts(scene, *scene.mRootNode, identity_map(), "", file, sources);
   if (lower(path.extension().string()) == ".obj") whole_obj_names(path, sources);
   unique_names(sources);
+  // the triangles to place, each node's meshes counted as often as nodes use them: refused
+  // over the limit before any exact point is made (docs/reliability.md, "Limits").
+  std::uint64_t faces = 0;
+  for (const PartSource& source : sources)
+    for (unsigned m = 0; m < source.node->mNumMeshes; ++m)
+      if (source.node->mMeshes[m] < scene.mNumMeshes)
+        faces += scene.mMeshes[source.node->mMeshes[m]]->mNumFaces;
+  if (faces > max_model_faces)
+    throw InputError(file, "",
+                     "the model has " + std::to_string(faces) + " faces, over the limit of " +
+                         std::to_string(max_model_faces) + " (docs/reliability.md, \"Limits\")");
 
   ImportedModel model;
   model.materials = materials(scene);

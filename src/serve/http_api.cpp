@@ -14,6 +14,8 @@
 #include <regex>
 
 #include "mesh_payload.h"
+#include "penumbra/base/input_error.h"
+#include "penumbra/base/input_file.h"
 #include "static_files.h"
 
 namespace penumbra::serve {
@@ -22,24 +24,32 @@ namespace {
 constexpr const char* json_type = "application/json";
 constexpr const char* binary_type = "application/octet-stream";
 
+// returns body as JSON text. Strings from the request (a path in an error message) may not
+// be UTF-8: they are written with U+FFFD in place of bad bytes, where dump() would throw and,
+// thrown from the error handler, end the server (found by fuzzing).
+std::string json_text(const nlohmann::json& body) {
+  return body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200) {
   response.status = status;
-  response.set_content(body.dump(), json_type);
+  response.set_content(json_text(body), json_type);
 }
 
 void send_error(httplib::Response& response, int status, const std::string& message) {
   send_json(response, {{"error", message}}, status);
 }
 
-// parses the request's body as JSON, or answers 400 and returns {}.
+// parses the request's body as JSON (nested at most max_json_depth deep), or answers 400
+// and returns {}.
 std::optional<nlohmann::json> parse_body(const httplib::Request& request,
                                          httplib::Response& response) {
-  nlohmann::json body = nlohmann::json::parse(request.body, nullptr, false);
-  if (body.is_discarded()) {
-    send_error(response, 400, "the request body is not valid JSON");
+  try {
+    return parse_input_json(request.body, "request body");
+  } catch (const InputError& error) {
+    send_error(response, 400, std::string("the request body is not valid JSON: ") + error.what());
     return {};
   }
-  return body;
 }
 
 // runs action, mapping the session's exceptions to status codes.
@@ -119,7 +129,7 @@ void send_edited(const httplib::Request& request, httplib::Response& response,
   const nlohmann::json lamp = describe(session.lamp(name));
   if (request.get_param_value("relight") != "1") return send_json(response, lamp);
   const RelitScene& relit = session.relit();
-  response.set_content(edited_payload(lamp.dump(), relit), binary_type);
+  response.set_content(edited_payload(json_text(lamp), relit), binary_type);
   response.set_header("X-Relight-Ms", std::to_string(relit.seconds * 1e3));
 }
 

@@ -14,6 +14,10 @@
 
 namespace penumbra::serve {
 
+namespace {
+constexpr std::size_t kConnectionThreads = 64;  // connections served at once
+}  // namespace
+
 bool is_loopback(const std::string& host) {
   return host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
 }
@@ -32,6 +36,10 @@ LightingServer::LightingServer(LightingSession& session, ServerOptions options)
     : impl_(new Impl{session, std::move(options), {}, {}, false, {false}, {false}}) {
   impl_->server.set_payload_max_length(impl_->options.max_body);
   impl_->server.set_keep_alive_max_count(1000);
+  // cpp-httplib gives each connection a thread for its whole life, keep-alive included, so
+  // its default of 8 threads let six browser connections and two slow clients hold every
+  // thread while new connections waited seconds (the load test, docs/reliability.md).
+  impl_->server.new_task_queue = [] { return new httplib::ThreadPool(kConnectionThreads); };
   // Small answers at once: Nagle's algorithm against delayed ACKs costs 40 ms a request.
   impl_->server.set_tcp_nodelay(true);
   register_routes(impl_->server, impl_->session, impl_->mutex);

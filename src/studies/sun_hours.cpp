@@ -114,8 +114,8 @@ SunHoursResult sun_hours(const Scene& scene, const SunPlacement& sun,
       if (std::find(result.faces.warnings.begin(), result.faces.warnings.end(), warning) ==
           result.faces.warnings.end())
         result.faces.warnings.push_back(std::move(warning));
-    for (LightShadows& step : shadows.lights) {
-      std::vector<FaceShadow>& lit = step.faces;
+    for (LightShadows& at_step : shadows.lights) {
+      std::vector<FaceShadow>& lit = at_step.faces;
       for (std::size_t r = 0; r < count; ++r) {
         if (lit[r].faces_away) continue;
         ++faces[r].facing;

@@ -91,9 +91,10 @@ bool SweptRegion::separated_from(const ConvexPolyhedron& solid) const {
   }
   std::vector<IntervalPoint> vertices;
   for (const Point3& v : solid.vertices()) vertices.push_back(interval_point(v));
-  for (const auto& [origin, normal] : planes_)
-    if (std::all_of(vertices.begin(), vertices.end(),
-                    [&](const IntervalPoint& x) { return dot_from(normal, x, origin).inf() > 0; }))
+  for (const auto& plane : planes_)  // not a structured binding: the lambda captures it (C++17)
+    if (std::all_of(vertices.begin(), vertices.end(), [&](const IntervalPoint& x) {
+          return dot_from(plane.second, x, plane.first).inf() > 0;
+        }))
       return true;
   return false;
 }

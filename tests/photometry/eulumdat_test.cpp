@@ -180,6 +180,12 @@ BOOST_AUTO_TEST_CASE(bad_files_name_the_line) {
   std::string isym = text;
   isym.replace(isym.find("\n2\n") + 1, 1, "7");
   BOOST_TEST(message(isym) == "line 3: the symmetry indicator Isym must be 0..4, found 7");
+  // found by fuzzing (tests/fuzz/regressions/eulumdat/integer-out-of-range.ldt): an integer
+  // too large for any integer type was converted before its range was checked
+  std::string huge = text;
+  huge.replace(huge.find("\n2\n") + 1, 1, "2e115");
+  BOOST_TEST(message(huge) ==
+             "line 3: the symmetry indicator Isym (line 3) must be an integer, found 2e+115");
   BOOST_TEST(message(text.substr(0, text.size() / 2)).find("the file ends after") !=
              std::string::npos);
 }

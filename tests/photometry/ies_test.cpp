@@ -223,6 +223,18 @@ BOOST_AUTO_TEST_CASE(bad_files_name_the_line_and_what_is_wrong) {
   BOOST_TEST(error_location(head + "1 1000 1 3 2 1 2 0 0 0\n1 1 10\n0 45 90\n0 45\n") ==
              "line 7: the horizontal angles 0..45 are not an LM-63 range for type C (0; 0-90; "
              "0-180; 90-270; 0-360)");
+  // found by fuzzing (tests/fuzz/regressions/ies/type-a-one-lateral-angle.ies): one lateral
+  // angle of type A or B gave a grid that interpolation read beyond
+  for (const char* type : {"2", "3"})
+    BOOST_TEST(
+        error_location(head + "1 1000 1 3 1 " + type + " 2 0 0 0\n1 1 10\n0 45 90\n0\n1 2 3\n") ==
+        std::string("line 7: the horizontal angles 0..0 are not an LM-63 range for type ") +
+            (type[0] == '2' ? "B" : "A") +
+            " (-90..90, or 0..90 for lateral symmetry; at least two angles)");
+  // found by fuzzing (regressions/ies/huge-angle-count.ies): a count far beyond what the
+  // file holds was reserved before reading (5 GB), and now ends in the truncation error
+  BOOST_TEST(error_location(head + "1 1000 1 672120362 1 1 2 0 0 0\n1 1 10\n0 45 90\n") ==
+             "line 6: the file ends after 3 of 672120362 vertical angles");
   BOOST_TEST(error_location("IESNA:LM-63-2002\n[TEST] truncated before TILT\n") ==
              "line 2: no TILT= line: this is not an LM-63 file, or it is truncated");
 }

@@ -157,7 +157,7 @@ BOOST_AUTO_TEST_CASE(a_missing_scene_file_is_named) {
     BOOST_ERROR("no error for a missing file");
   } catch (const InputError& e) {
     BOOST_TEST(e.file().find("does-not-exist.json") != std::string::npos);
-    BOOST_TEST(e.message() == "cannot open the scene file");
+    BOOST_TEST(e.message() == "cannot open the scene file: it does not exist");
   }
 }
 

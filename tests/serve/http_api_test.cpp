@@ -210,6 +210,16 @@ BOOST_AUTO_TEST_CASE(bad_requests_get_4xx_and_the_server_survives) {
   BOOST_TEST(client.Post("/api/scene", "{}", "application/json")->status == 405);
   BOOST_TEST(client.Post("/index.html", "{}", "application/json")->status == 405);
   BOOST_TEST(client.Delete("/api/nothing")->status == 404);
+  // a path that is not UTF-8 (found by fuzzing: its 404 message could not be written as JSON,
+  // and the exception ended the server), answered with U+FFFD in its place
+  const auto not_utf8 = client.Post("/api/\xdf/x", "{}", "application/json");
+  BOOST_TEST_REQUIRE(static_cast<bool>(not_utf8));
+  BOOST_TEST(not_utf8->status == 404);
+  BOOST_TEST(error_of(not_utf8).find("/api/\xEF\xBF\xBD/x") != std::string::npos);
+  // a body nested deeper than the JSON limit of docs/reliability.md
+  const auto deep = post("/api/lights/downlight", std::string(100, '[') + std::string(100, ']'));
+  BOOST_TEST(deep->status == 400);
+  BOOST_TEST(error_of(deep).find("nested more than 64 deep") != std::string::npos);
   // still serving, state untouched by the refused edits
   const auto state = client.Get("/api/lights/downlight");
   BOOST_TEST_REQUIRE(state->status == 200);

@@ -45,10 +45,15 @@ struct FaceGrid {
   std::vector<std::int64_t> cells;  // nu * nv entries, a + nu b: patch index or -1
 };
 
+// The most patches a mesh may have (docs/reliability.md, "Limits"): a basis holds, per patch
+// and light, (degree + 1)^2 values a channel, about a kilobyte at degree 8.
+inline constexpr std::uint64_t max_patches = 500'000;
+
 class PatchMesh {
  public:
   // cuts every face of scene into patches of edge at most patch_size (m, > 0).
-  // Throws std::invalid_argument when patch_size is not positive and finite.
+  // Throws std::invalid_argument when patch_size is not positive and finite, InputError
+  // ("--patch-size") when the faces' grids would hold more than max_patches cells.
   static PatchMesh subdivide(const Scene& scene, double patch_size);
 
   // assembles a mesh from its parts (used when reading a basis file). Such a mesh has no

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -84,6 +85,10 @@ struct ImportedModel {
   std::vector<ModelMaterial> materials;
   RepairReport repairs;  // the sum over the parts
 };
+
+// The most faces (triangles once triangulated) a model may have, counting each use of a mesh
+// by the file's nodes (docs/reliability.md, "Limits").
+inline constexpr std::uint64_t max_model_faces = 10'000'000;
 
 // reads the model file at path through Assimp and returns its exact planar-face model,
 // placed as placement says. Throws InputError naming the file (and the part, where one is
