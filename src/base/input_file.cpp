@@ -60,21 +60,43 @@ std::string line_and_column(const std::string& text, std::size_t byte) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
+// returns the byte offset where an array or object opens more than max_json_depth deep
+// outside strings, or npos. A scan of the brackets before parsing: nlohmann's parser
+// callback could count the depth too, but parsing with it took the 10,000-building city's
+// 3.8 MB three times as long (0.17 s instead of 0.06 s; the scan takes 0.004 s).
+std::size_t too_deep_at(const std::string& text) {
+  int depth = 0;
+  bool in_string = false, escaped = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (escaped)
+        escaped = false;
+      else if (c == '\\')
+        escaped = true;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > max_json_depth) return i;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return std::string::npos;
+}
+
 }  // namespace
 
 nlohmann::json parse_input_json(const std::string& text, const std::string& file) {
-  // depth counts the containers open around a value: 1 inside the outermost one.
-  const nlohmann::json::parser_callback_t within_depth =
-      [&file](int depth, nlohmann::json::parse_event_t event, nlohmann::json&) {
-        if (depth >= max_json_depth && (event == nlohmann::json::parse_event_t::object_start ||
-                                        event == nlohmann::json::parse_event_t::array_start))
-          throw InputError(file, "",
-                           "arrays and objects nested more than " + std::to_string(max_json_depth) +
-                               " deep (docs/reliability.md, \"Limits\")");
-        return true;
-      };
+  const std::size_t deep = too_deep_at(text);
+  if (deep != std::string::npos)
+    throw InputError(file, line_and_column(text, deep),
+                     "arrays and objects nested more than " + std::to_string(max_json_depth) +
+                         " deep (docs/reliability.md, \"Limits\")");
   try {
-    return nlohmann::json::parse(text, within_depth);
+    return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& error) {
     throw InputError(file, line_and_column(text, error.byte == 0 ? 0 : error.byte - 1),
                      std::string("malformed JSON: ") + error.what());

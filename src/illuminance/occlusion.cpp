@@ -131,7 +131,8 @@ HiddenIntervalBounds hidden_interval_filter(const ConvexPolyhedron& occluder, co
   // w + y + z = 1 is on the open segment from the apex to Q(u) = a + u (b - a) for
   // y = t (1 - u), z = t u, w = 1 - t, 0 < t < 1, so u = z / (y + z). Each face plane is
   // affine: F(X) = w F(apex) + y F(a) + z F(b). The closed triangle w, y, z >= 0 clipped
-  // by every F <= 0 is a convex polygon whose interior, when it has area, is the set of
+  // by every F <= 0 is a convex polygon whose interior, when it has area and no face plane
+  // holds the triangle (then some F would vanish on the whole polygon), is the set of
   // points of those segments inside the occluder; the hidden parameters run between the
   // least and the largest u of its vertices (u is monotone along each edge). Vertices keep
   // all three weights, so a vertex on a plane through the source's end points gets the
@@ -156,6 +157,17 @@ HiddenIntervalBounds hidden_interval_filter(const ConvexPolyhedron& occluder, co
     const auto value = [&](const Vec3d& x) { return plane_value(h, x); };
     const Interval at_apex = value(apex), at_a = value(a), at_b = value(b);
     if (at_apex.inf() > 0) apex_outside = true;
+    // A face plane that holds the whole triangle: every segment runs in the occluder's
+    // boundary, never its interior, so nothing is hidden. The polygon below would still
+    // have area, so this case is decided here; a plane that only may hold it is left to
+    // the exact functions.
+    const auto may_be_zero = [](const Interval& x) { return x.inf() <= 0 && x.sup() >= 0; };
+    if (may_be_zero(at_apex) && may_be_zero(at_a) && may_be_zero(at_b)) {
+      const auto is_zero = [](const Interval& x) { return x.inf() == 0 && x.sup() == 0; };
+      if (is_zero(at_apex) && is_zero(at_a) && is_zero(at_b))
+        return {HiddenIntervalBounds::Verdict::nothing};
+      return unknown;
+    }
     // Every vertex certainly inside (F <= 0) or certainly outside (F > 0) the closed
     // half-space, or the filter gives up.
     bool all_inside = true;

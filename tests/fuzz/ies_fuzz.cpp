@@ -11,10 +11,10 @@
 PENUMBRA_FUZZ_TARGET(ies) {
   using namespace penumbra::photometry;
   const IesFile ies = parse_ies(penumbra::fuzz::text_of(data, size), "fuzz.ies");
+  const PhotometricGrid grid = candela_grid(ies);
   for (const Interpolation interpolation : {Interpolation::linear, Interpolation::cosine}) {
-    PhotometricGrid grid = candela_grid(ies);
     if (interpolation == Interpolation::cosine && grid.type != PhotometricType::c) continue;
-    const TableDistribution distribution(std::move(grid), interpolation);
+    const TableDistribution distribution(PhotometricGrid(grid), interpolation);
     for (const double gamma : {0.0, 0.7, 1.5707963267948966, 2.9, 3.141592653589793})
       for (const double c : {0.0, 1.1, 3.141592653589793, 5.5})
         (void)distribution.intensity(gamma, c);

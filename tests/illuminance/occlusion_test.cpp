@@ -179,6 +179,30 @@ BOOST_AUTO_TEST_CASE(ray_hidden_matches_the_ray_oracle) {
   BOOST_TEST(hidden < total);
 }
 
+// A receiving point and a source in the plane of an occluder's face: every segment from the
+// point to the source runs in that plane, which touches the solid only on its boundary, so
+// nothing is hidden although the segments cross the face (found by the sanitizer build, whose
+// clang draws the random occluders below in another order). The unit cube's top z = 1;
+// the point (2, 1/2, 1) east of it, the source from (-1, 0, 1) to (-1, 1, 1) west of it.
+BOOST_AUTO_TEST_CASE(hidden_interval_filter_in_a_face_plane_hides_nothing) {
+  const ConvexPolyhedron cube = box({0, 0, 0}, {1, 1, 1});
+  const Vec3d apex{2, 0.5, 1}, a{-1, 0, 1}, b{-1, 1, 1};
+  BOOST_TEST(!hidden_interval(hidden_region(cube, to_exact(apex)), to_exact(a), to_exact(b)));
+  BOOST_TEST(
+      (hidden_interval_filter(cube, apex, a, b).verdict == HiddenIntervalBounds::Verdict::nothing));
+  // Half a unit lower the same segments pass through the cube's interior for u in (0, 1):
+  // all of the source is hidden, and the filter brackets 0 and 1.
+  const Vec3d low_apex{2, 0.5, 0.5}, low_a{-1, 0, 0.5}, low_b{-1, 1, 0.5};
+  const auto exact =
+      hidden_interval(hidden_region(cube, to_exact(low_apex)), to_exact(low_a), to_exact(low_b));
+  BOOST_TEST_REQUIRE(exact.has_value());
+  BOOST_TEST((exact->low == 0 && exact->high == 1));
+  const HiddenIntervalBounds bounds = hidden_interval_filter(cube, low_apex, low_a, low_b);
+  BOOST_TEST((bounds.verdict == HiddenIntervalBounds::Verdict::interval));
+  BOOST_TEST((bounds.low.inf() <= 0 && 0 <= bounds.low.sup()));
+  BOOST_TEST((bounds.high.inf() <= 1 && 1 <= bounds.high.sup()));
+}
+
 // The interval filter of hidden_interval is certain: where it decides, the exact
 // hidden_region and hidden_interval agree (nothing hidden, or exact ends inside the
 // filter's enclosures). Apexes and source ends both on the 1/8 lattice (exact ties: ends

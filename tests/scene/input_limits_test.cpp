@@ -110,7 +110,14 @@ BOOST_AUTO_TEST_CASE(json_nested_deeper_than_the_limit_is_refused) {
   // a million deep in a scene: refused, not a stack overflow
   const std::string scene = refusal(
       [] { parse_scene(R"({"penumbra": 1, "objects": )" + nested(1000000) + "}", "deep.json"); });
-  BOOST_TEST(contains(scene, "deep.json: arrays and objects nested more than"), scene);
+  // where: the 65th container, the 64th "[" after the scene's "{", opens at column 28 + 63
+  // (the first "[" follows the 27 characters of '{"penumbra": 1, "objects": ')
+  BOOST_TEST(contains(scene, "deep.json: line 1, column 91: arrays and objects nested more than"),
+             scene);
+  // brackets in strings, escaped quotes among them, are not nesting
+  const std::string in_string = "{\"a\": \"\\\"" + std::string(100, '[') + "\"}";
+  BOOST_CHECK_NO_THROW(parse_input_json(in_string, "s.json"));
+  BOOST_TEST(parse_input_json(in_string, "s.json")["a"].get<std::string>().size() == 101u);
   // a syntax error still gives its line and column
   BOOST_TEST(contains(refusal([] { parse_input_json("{\n  \"a\": [1,, 2]\n}", "g.json"); }),
                       "g.json: line 2, column 11: malformed JSON"));

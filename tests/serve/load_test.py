@@ -44,6 +44,9 @@ def parse_arguments():
     parser.add_argument("--clients", type=int, default=6)
     parser.add_argument("--slow", type=int, default=2)
     parser.add_argument("--json", help="also write the figures to this file")
+    parser.add_argument("--no-memory-bound", action="store_true",
+                        help="do not fail on memory growth (AddressSanitizer's quarantine keeps "
+                             "up to 256 MB of freed memory resident: the growth is not the server's)")
     return parser.parse_args()
 
 
@@ -310,7 +313,7 @@ def main():
         last = [kb for t, kb in samples if t > 2 * load_seconds / 3]
         growth_mb = (max(last) - max(third)) / 1024 if third and last else 0
         peak_mb = server.peak_kb() / 1024
-        if growth_mb > 64:
+        if growth_mb > 64 and not args.no_memory_bound:
             failures.append(f"resident memory grew by {growth_mb:.0f} MB over the run")
     finally:
         server.stop()

@@ -18,8 +18,10 @@ inline Exact plane_value(const Plane3& plane, const Point3& p) {
   return plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d();
 }
 
-// returns true when the convex hull of simplex (2 or 3 points) meets solid's interior.
-inline bool simplex_meets_interior(std::vector<Point3> polygon, const ConvexPolyhedron& solid) {
+// returns the vertices of the convex hull of simplex (2 or 3 points) clipped to the closed
+// solid (Sutherland-Hodgman, exact): empty when they do not meet.
+inline std::vector<Point3> clip_to_solid(std::vector<Point3> polygon,
+                                         const ConvexPolyhedron& solid) {
   for (const Face& face : solid.faces()) {
     std::vector<Point3> kept;
     const std::size_t n = polygon.size();
@@ -31,14 +33,29 @@ inline bool simplex_meets_interior(std::vector<Point3> polygon, const ConvexPoly
       if ((fa < 0 && fb > 0) || (fa > 0 && fb < 0)) kept.push_back(a + (fa / (fa - fb)) * (b - a));
     }
     polygon = std::move(kept);
-    if (polygon.empty()) return false;
+    if (polygon.empty()) break;
   }
+  return polygon;
+}
+
+// returns true when the convex hull of simplex (2 or 3 points) meets solid's interior.
+inline bool simplex_meets_interior(std::vector<Point3> polygon, const ConvexPolyhedron& solid) {
+  polygon = clip_to_solid(std::move(polygon), solid);
+  if (polygon.empty()) return false;
   Vector3 sum = CGAL::NULL_VECTOR;
   for (const Point3& p : polygon) sum = sum + (p - CGAL::ORIGIN);
   const Point3 centre = CGAL::ORIGIN + sum / static_cast<int>(polygon.size());
   for (const Face& face : solid.faces())
     if (plane_value(face.plane, centre) >= 0) return false;
   return true;
+}
+
+// returns true when the convex hull of simplex (2 or 3 points) touches the solid's boundary
+// without meeting its interior: from such a point X the light grazes the solid, and X lies
+// on the boundary of the solid's blocked set (its shadow volume), where another solid's
+// shadow may abut (docs/shadows.md: the lit line between abutting shadows is dropped).
+inline bool simplex_grazes(const std::vector<Point3>& polygon, const ConvexPolyhedron& solid) {
+  return !clip_to_solid(polygon, solid).empty() && !simplex_meets_interior(polygon, solid);
 }
 
 inline bool triangle_blocked(const Point3& x, const Point3& q1, const Point3& q2,

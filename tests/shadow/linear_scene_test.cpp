@@ -17,6 +17,7 @@
 #include "penumbra/shadow/shadow_map.h"
 #include "solids.h"
 #include "support/fixtures.h"
+#include "support/heavy.h"
 
 using namespace penumbra;
 
@@ -164,7 +165,7 @@ BOOST_AUTO_TEST_CASE(mesh_pieces_under_a_tube_agree_with_the_oracles) {
   BOOST_TEST(counts.in_umbra > 20);
 }
 
-BOOST_AUTO_TEST_CASE(ifc_house_under_a_tube_agrees_with_the_oracles) {
+BOOST_AUTO_TEST_CASE(ifc_house_under_a_tube_agrees_with_the_oracles, PENUMBRA_HEAVY_TEST) {
   // The KIT house (fixtures/meshes/AC14-FZK-Haus.ifc.gz, "up": "y", as in mesh_oracle_test)
   // with a 4 m tube east of it at 3.1 m, parallel to its east wall: the ground's top and the
   // pieces of the east façade (the eaves, the windows' frames and reveals shade the wall),

@@ -23,6 +23,7 @@
 #include "penumbra/shadow/shadow_map.h"
 #include "shadow_document.h"
 #include "support/fixtures.h"
+#include "support/heavy.h"
 
 using namespace penumbra;
 using namespace penumbra::test;
@@ -443,7 +444,7 @@ BOOST_AUTO_TEST_CASE(a_lamp_inside_a_closed_model_is_shaded_by_every_face) {
   require_agreement(tally, 200);
 }
 
-BOOST_AUTO_TEST_CASE(ifc_house_agrees_with_the_exact_oracle) {
+BOOST_AUTO_TEST_CASE(ifc_house_agrees_with_the_exact_oracle, PENUMBRA_HEAVY_TEST) {
   // The KIT house (fixtures/meshes/README.md): IFC in metres and z up, which Assimp's IFC
   // reader turns y up, so "up": "y" turns it back. import_model gives 110 parts, about
   // 18,700 faces (some 9,700 of closed solids, the rest of open surfaces: 27,325 entries) in
