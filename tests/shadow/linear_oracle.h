@@ -38,24 +38,31 @@ inline std::vector<Point3> clip_to_solid(std::vector<Point3> polygon,
   return polygon;
 }
 
-// returns true when the convex hull of simplex (2 or 3 points) meets solid's interior.
-inline bool simplex_meets_interior(std::vector<Point3> polygon, const ConvexPolyhedron& solid) {
-  polygon = clip_to_solid(std::move(polygon), solid);
-  if (polygon.empty()) return false;
+// returns true when a clipped set (clip_to_solid's, not empty) has a point in the solid's
+// interior: then so does its vertex centroid, a point of its relative interior.
+inline bool clipped_meets_interior(const std::vector<Point3>& clipped,
+                                   const ConvexPolyhedron& solid) {
   Vector3 sum = CGAL::NULL_VECTOR;
-  for (const Point3& p : polygon) sum = sum + (p - CGAL::ORIGIN);
-  const Point3 centre = CGAL::ORIGIN + sum / static_cast<int>(polygon.size());
+  for (const Point3& p : clipped) sum = sum + (p - CGAL::ORIGIN);
+  const Point3 centre = CGAL::ORIGIN + sum / static_cast<int>(clipped.size());
   for (const Face& face : solid.faces())
     if (plane_value(face.plane, centre) >= 0) return false;
   return true;
+}
+
+// returns true when the convex hull of simplex (2 or 3 points) meets solid's interior.
+inline bool simplex_meets_interior(std::vector<Point3> polygon, const ConvexPolyhedron& solid) {
+  const std::vector<Point3> clipped = clip_to_solid(std::move(polygon), solid);
+  return !clipped.empty() && clipped_meets_interior(clipped, solid);
 }
 
 // returns true when the convex hull of simplex (2 or 3 points) touches the solid's boundary
 // without meeting its interior: from such a point X the light grazes the solid, and X lies
 // on the boundary of the solid's blocked set (its shadow volume), where another solid's
 // shadow may abut (docs/shadows.md: the lit line between abutting shadows is dropped).
-inline bool simplex_grazes(const std::vector<Point3>& polygon, const ConvexPolyhedron& solid) {
-  return !clip_to_solid(polygon, solid).empty() && !simplex_meets_interior(polygon, solid);
+inline bool simplex_grazes(std::vector<Point3> polygon, const ConvexPolyhedron& solid) {
+  const std::vector<Point3> clipped = clip_to_solid(std::move(polygon), solid);
+  return !clipped.empty() && !clipped_meets_interior(clipped, solid);
 }
 
 inline bool triangle_blocked(const Point3& x, const Point3& q1, const Point3& q2,
