@@ -67,7 +67,7 @@ Prepared& prepared(Which which) {
 const render::RenderedImage& exact_image(Which which) {
   Prepared& scene = prepared(which);
   if (!scene.exact)
-    scene.exact = std::make_unique<render::RenderedImage>(scene.renderer->render({1, true}));
+    scene.exact = std::make_unique<render::RenderedImage>(scene.renderer->render({1, true, {}}));
   return *scene.exact;
 }
 
@@ -98,7 +98,7 @@ void BM_RenderShade(benchmark::State& state, Which which) {
   const render::RenderedImage& exact = exact_image(which);
   render::RenderedImage image;
   const double cpu_before = process_cpu_seconds();
-  for (auto _ : state) image = renderer.render({interval, true});
+  for (auto _ : state) image = renderer.render({interval, true, {}});
   state.counters["process_cpu_s"] =
       (process_cpu_seconds() - cpu_before) / static_cast<double>(state.iterations());
   const double top = *std::max_element(exact.illuminance.begin(), exact.illuminance.end());

@@ -1,8 +1,10 @@
 #include "radiosity_options.h"
 
 #include <cmath>
+#include <iostream>
 
 #include "penumbra/base/input_error.h"
+#include "penumbra/scene/scene.h"
 
 namespace penumbra::cli {
 
@@ -40,6 +42,32 @@ void finish_radiosity_options(RadiosityArguments& arguments) {
     throw InputError("<command line>", "--tolerance", "must lie in (0, 1)");
   if (options.radiosity.max_iterations < 1)
     throw InputError("<command line>", "--max-iterations", "must be at least 1");
+}
+
+void add_indirect_options(CLI::App* verb, std::string& setting, RadiosityArguments& arguments) {
+  verb->add_option("--indirect", setting,
+                   "add interreflected light from a radiosity solve: auto (when a material "
+                   "reflects), on, off")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "on", "off"}));
+  add_radiosity_options(verb, arguments);
+}
+
+bool wants_indirect(const std::string& setting, const Scene& scene,
+                    const RadiosityArguments& arguments) {
+  if (setting != "auto") return setting == "on";
+  if (scene.lights.empty()) return false;
+  bool reflects = false;
+  for (const Object& object : scene.objects)
+    reflects = reflects || scene.materials[object.material].reflectance > 0;
+  if (!reflects) return false;
+  const std::size_t patches =
+      basis::PatchMesh::subdivide(scene, arguments.options.patch_size).size();
+  if (patches <= max_automatic_patches) return true;
+  std::cerr << "penumbra: note: no indirect light: the patch mesh would hold " << patches
+            << " patches, more than the " << max_automatic_patches
+            << " of --indirect auto (--indirect on adds it)\n";
+  return false;
 }
 
 }  // namespace penumbra::cli

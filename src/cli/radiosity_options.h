@@ -7,6 +7,10 @@
 
 #include "penumbra/basis/basis_luminances.h"
 
+namespace penumbra {
+struct Scene;
+}
+
 namespace penumbra::cli {
 
 struct RadiosityArguments {
@@ -19,5 +23,19 @@ void add_radiosity_options(CLI::App* verb, RadiosityArguments& arguments);
 
 // checks the values and fills options.form_factors.method; throws InputError.
 void finish_radiosity_options(RadiosityArguments& arguments);
+
+// adds --indirect auto|on|off (into setting) and the radiosity options: `render` and
+// `raytrace` add the interreflected light of a radiosity solve (docs/render.md, step 5).
+void add_indirect_options(CLI::App* verb, std::string& setting, RadiosityArguments& arguments);
+
+// The most patches `--indirect auto` solves; beyond, it says so and leaves indirect light off
+// (a finely tessellated model makes one patch a facet: the teapot's 34,000 patches take 10 s).
+inline constexpr std::size_t max_automatic_patches = 20'000;
+
+// returns whether to add indirect light: setting "on", or "auto" with a light, a material
+// that reflects and a patch mesh of at most max_automatic_patches (a note on standard error
+// otherwise).
+bool wants_indirect(const std::string& setting, const Scene& scene,
+                    const RadiosityArguments& arguments);
 
 }  // namespace penumbra::cli

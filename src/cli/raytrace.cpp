@@ -4,14 +4,17 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "penumbra/base/atomic_file.h"
 #include "penumbra/base/csv.h"
 #include "penumbra/base/input_error.h"
 #include "penumbra/base/png.h"
 #include "penumbra/base/tone_map.h"
+#include "penumbra/basis/indirect_light.h"
 #include "penumbra/raytrace/render.h"
 #include "penumbra/scene/load_scene.h"
+#include "radiosity_options.h"
 #include "verbs.h"
 
 namespace penumbra::cli {
@@ -30,6 +33,8 @@ struct RaytraceArguments {
   std::string exposure = "auto";
   std::string values;
   int tube_samples = 16;
+  std::string indirect = "auto";
+  RadiosityArguments radiosity;
 };
 
 void write_values(const std::string& path, const Scene& scene,
@@ -48,7 +53,8 @@ void write_values(const std::string& path, const Scene& scene,
   });
 }
 
-int run_raytrace(const RaytraceArguments& args) {
+int run_raytrace(RaytraceArguments& args) {
+  finish_radiosity_options(args.radiosity);
   const double exposure = parse_exposure(args.exposure);
   const Scene& scene = load_scene_until_exit(args.scene);
   for (const std::string& warning : scene.warnings)
@@ -71,10 +77,19 @@ int run_raytrace(const RaytraceArguments& args) {
   render.objects = !args.values.empty();
 
   const auto start = std::chrono::steady_clock::now();
+  std::optional<basis::IndirectLight> indirect;
+  if (wants_indirect(args.indirect, scene, args.radiosity)) {
+    indirect.emplace(basis::solve_scene_radiosity(scene, args.radiosity.options));
+    trace.indirect = [&](std::size_t object, std::size_t face, const Vec3d& point) {
+      return indirect->at(object, face, point);
+    };
+  }
+  const auto traced_from = std::chrono::steady_clock::now();
   const raytrace::RayTracer tracer(scene, trace);
   const raytrace::RenderedImage image = raytrace::render(tracer, *scene.camera, render);
   const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - traced_from).count();
+  const double radiosity_seconds = std::chrono::duration<double>(traced_from - start).count();
 
   write_png(args.output, image.width, image.height, to_srgb8(image.pixels, image.exposure));
   if (!args.values.empty()) write_values(args.values, scene, image);
@@ -90,11 +105,16 @@ int run_raytrace(const RaytraceArguments& args) {
             << ", reflected " << rays.reflected << ", refracted " << rays.refracted << "), "
             << std::setprecision(3) << static_cast<double>(rays.camera) / pixels
             << " camera rays per pixel\n"
-            << "exposure " << image.exposure << " per cd/m^2\n"
-            << "image " << args.output << "\n";
+            << "exposure " << image.exposure << " per cd/m^2\n";
+  if (indirect)
+    std::cout << "indirect light: patches " << indirect->solution().mesh.size() << ", sweeps "
+              << indirect->solution().iterations << "\n";
+  std::cout << "image " << args.output << "\n";
   // times differ from run to run: on standard error, so that standard output does not
   std::cerr << "time " << seconds << " s, " << static_cast<double>(rays.total()) / seconds / 1e6
-            << " Mrays/s\n";
+            << " Mrays/s";
+  if (indirect) std::cerr << " (and the radiosity solve " << radiosity_seconds << " s)";
+  std::cerr << "\n";
   return 0;
 }
 
@@ -137,6 +157,7 @@ void register_raytrace(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(1, 4096));
   verb->add_option("--values", args->values, "CSV of px,py,object,R,G,B (linear luminance)");
+  add_indirect_options(verb, args->indirect, args->radiosity);
   verb->callback([args] { exit_status() = run_raytrace(*args); });
 }
 

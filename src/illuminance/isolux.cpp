@@ -159,4 +159,18 @@ std::vector<IsoluxLine> isolux_lines(const WorkplaneValues& values,
   return lines;
 }
 
+std::vector<double> picture_levels(std::vector<double> values) {
+  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return !(v > 0); }),
+               values.end());
+  if (values.empty()) return {};
+  const auto at = [&](double fraction) {
+    const auto rank =
+        static_cast<std::ptrdiff_t>(fraction * static_cast<double>(values.size() - 1));
+    std::nth_element(values.begin(), values.begin() + rank, values.end());
+    return values[static_cast<std::size_t>(rank)];
+  };
+  const double low = at(0.02), high = at(0.98);
+  return isolux_levels(low, high);
+}
+
 }  // namespace penumbra::illuminance

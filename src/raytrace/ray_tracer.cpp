@@ -212,8 +212,13 @@ struct RayTracer::Impl {
     DirectLight light{surface.normal, to_viewer, &material};
     const bool inside = dot(surface.normal, hit->normal) < 0;
     gather(hit->point, ShadedSurface{hit->object, inside}, light, random, counts);
-    const double diffuse = material.reflectance * light.illuminance / pi;
-    for (int c = 0; c < 3; ++c) result.radiance[c] = diffuse * material.color[c] + light.specular;
+    Colour indirect{0, 0, 0};
+    if (options.indirect && hit->face >= 0 && !inside)
+      indirect = options.indirect(hit->object, static_cast<std::size_t>(hit->face), hit->point);
+    for (int c = 0; c < 3; ++c)
+      result.radiance[c] =
+          material.reflectance * material.color[c] * (light.illuminance + indirect[c]) / pi +
+          light.specular;
 
     if (depth >= options.max_depth) return result;
     double k_s = material.reflect;

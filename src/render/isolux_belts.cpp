@@ -15,6 +15,22 @@ Rgb8 belt_colour(double e, double maximum) {
   return scale_colour(e / maximum);
 }
 
+LevelScale level_scale(const std::vector<double>& levels, double maximum) {
+  LevelScale scale;
+  scale.maximum = maximum;
+  if (!levels.empty() && levels.front() > 0 && levels.back() / levels.front() > 20) {
+    scale.logarithmic = true;
+    scale.low = levels.front();
+  }
+  return scale;
+}
+
+Rgb8 LevelScale::colour(double value) const {
+  if (!logarithmic) return belt_colour(value, maximum);
+  if (!(value > low)) return scale_colour(0);
+  return scale_colour(std::log(value / low) / std::log(maximum / low));
+}
+
 int isolux_band(double e, const std::vector<double>& levels) {
   return static_cast<int>(std::upper_bound(levels.begin(), levels.end(), e) - levels.begin());
 }
@@ -25,13 +41,23 @@ void paint_isolux_belts(std::vector<std::uint8_t>& rgb, const RenderedImage& ima
       std::max(levels.empty() ? 0.0 : levels.back(),
                *std::max_element(image.illuminance.begin(), image.illuminance.end()));
   if (!(maximum > 0)) return;
+  const LevelScale scale = level_scale(levels, maximum);
   for (std::size_t pixel = 0; pixel < image.illuminance.size(); ++pixel) {
     if (image.visibility.objects[pixel] < 0) continue;
     const double e = image.illuminance[pixel];
     // above the highest level there is no closing line: the shaded image shows through
     const int band = isolux_band(e, levels);
     if (band % 2 == 0 || band == static_cast<int>(levels.size())) continue;
-    const Rgb8 colour = belt_colour(e, maximum);
+    const Rgb8 colour = scale.colour(e);
+    for (int c = 0; c < 3; ++c) rgb[3 * pixel + c] = colour[c];
+  }
+}
+
+void paint_false_colour(std::vector<std::uint8_t>& rgb, const RenderedImage& image,
+                        const std::vector<double>& values, const LevelScale& scale) {
+  for (std::size_t pixel = 0; pixel < values.size(); ++pixel) {
+    if (image.visibility.objects[pixel] < 0) continue;
+    const Rgb8 colour = scale.colour(values[pixel]);
     for (int c = 0; c < 3; ++c) rgb[3 * pixel + c] = colour[c];
   }
 }
@@ -52,15 +78,18 @@ const std::map<char, std::array<int, 5>>& font() {
       {'6', {7, 4, 7, 5, 7}}, {'7', {7, 1, 1, 1, 1}}, {'8', {7, 5, 7, 5, 7}},
       {'9', {7, 5, 7, 1, 7}}, {'.', {0, 0, 0, 0, 2}}, {'-', {0, 0, 7, 0, 0}},
       {'e', {0, 7, 7, 4, 7}}, {'+', {0, 2, 7, 2, 0}}, {'l', {4, 4, 4, 4, 6}},
-      {'x', {0, 5, 2, 5, 5}}, {' ', {0, 0, 0, 0, 0}}};
+      {'x', {0, 5, 2, 5, 5}}, {' ', {0, 0, 0, 0, 0}}, {'c', {0, 7, 4, 4, 7}},
+      {'d', {1, 1, 7, 5, 7}}, {'m', {0, 7, 7, 5, 5}}, {'/', {1, 1, 2, 4, 4}}};
   return glyphs;
 }
 
 }  // namespace
 
 void draw_isolux_legend(std::vector<std::uint8_t>& rgb, int width, int height,
-                        const std::vector<double>& levels, double maximum) {
+                        const std::vector<double>& levels, double maximum,
+                        const std::string& unit) {
   if (levels.empty() || !(maximum > 0)) return;
+  const LevelScale colours = level_scale(levels, maximum);
   const int scale = std::max(1, std::min(width, height) / 160);
   const int line = 7 * scale;
   const auto set = [&](int x, int y, const Rgb8& colour) {
@@ -69,7 +98,8 @@ void draw_isolux_legend(std::vector<std::uint8_t>& rgb, int width, int height,
     for (int c = 0; c < 3; ++c) rgb[3 * pixel + c] = colour[c];
   };
   std::size_t longest = 0;
-  for (double level : levels) longest = std::max(longest, level_text(level).size() + 3);
+  for (double level : levels)
+    longest = std::max(longest, level_text(level).size() + 1 + unit.size());
   const int box_width = (6 + 4 * static_cast<int>(longest)) * scale + 2 * scale;
   const int box_height = line * static_cast<int>(levels.size()) + 2 * scale;
   for (int y = 0; y < box_height; ++y)
@@ -78,11 +108,11 @@ void draw_isolux_legend(std::vector<std::uint8_t>& rgb, int width, int height,
   for (std::size_t k = 0; k < levels.size(); ++k) {
     const double level = levels[levels.size() - 1 - k];
     const int top = scale + line * static_cast<int>(k);
-    const Rgb8 colour = belt_colour(level, maximum);
+    const Rgb8 colour = colours.colour(level);
     for (int y = 0; y < 5 * scale; ++y)
       for (int x = 0; x < 4 * scale; ++x) set(scale + x, top + y, colour);
     int left = 6 * scale;
-    for (char ch : level_text(level) + " lx") {
+    for (char ch : level_text(level) + " " + unit) {
       const auto glyph = font().find(ch);
       if (glyph != font().end())
         for (int row = 0; row < 5; ++row)

@@ -160,7 +160,9 @@ struct ScanlineRenderer::Impl {
   }
 
   // Nishita 1985 section 3.3: shades row j; returns (evaluations, crossings).
-  std::array<std::size_t, 2> shade_row(int j, int interval, RenderedImage& image) const {
+  std::array<std::size_t, 2> shade_row(int j, const RenderOptions& options,
+                                       RenderedImage& image) const {
+    const int interval = options.interval;
     const int width = visibility.width;
     const long* objects = &visibility.objects[visibility.index(0, j)];
     const int* faces = &visibility.faces[visibility.index(0, j)];
@@ -213,9 +215,18 @@ struct ScanlineRenderer::Impl {
             materials[object_material[static_cast<std::size_t>(objects[first])]];
         for (int i = first; i <= last; ++i) {
           const std::size_t pixel = image.index(i, j);
-          const double luminance = material.reflectance * image.illuminance[pixel] / pi;
-          image.luminance[pixel] = luminance;
-          for (int c = 0; c < 3; ++c) image.radiance[pixel][c] = luminance * material.color[c];
+          const double direct = image.illuminance[pixel];
+          Colour indirect{0, 0, 0};
+          if (options.indirect) {
+            indirect = options.indirect(static_cast<std::size_t>(objects[first]),
+                                        static_cast<std::size_t>(faces[first]), (*point(i, j))[0]);
+            image.indirect[pixel] = photometric_value(indirect);
+            image.illuminance[pixel] += image.indirect[pixel];
+          }
+          image.luminance[pixel] = material.reflectance * image.illuminance[pixel] / pi;
+          for (int c = 0; c < 3; ++c)
+            image.radiance[pixel][c] =
+                material.reflectance * material.color[c] * (direct + indirect[c]) / pi;
         }
       }
       first = last + 1;
@@ -249,6 +260,7 @@ RenderedImage ScanlineRenderer::render(const RenderOptions& options) const {
   image.visibility = impl_->visibility;
   const std::size_t pixels = static_cast<std::size_t>(image.width) * image.height;
   image.illuminance.assign(pixels, 0);
+  image.indirect.assign(pixels, 0);
   image.luminance.assign(pixels, 0);
   image.radiance.assign(pixels, Colour{0, 0, 0});
   std::atomic<std::size_t> evaluations{0}, crossings{0};
@@ -256,7 +268,7 @@ RenderedImage ScanlineRenderer::render(const RenderOptions& options) const {
   Progress progress("shading scan lines", static_cast<std::size_t>(image.height));
   const auto rows = [&](int first, int last) {
     for (int j = first; j < last; ++j) {
-      const auto counts = impl_->shade_row(j, options.interval, image);
+      const auto counts = impl_->shade_row(j, options, image);
       evaluations += counts[0];
       crossings += counts[1];
       progress.advance();

@@ -9,9 +9,10 @@
 namespace penumbra::test {
 
 // A closed room [0, size]^3 of six slabs 0.1 m thick, all of reflectance rho, lit by the
-// point light `lamp_json` (a scene `lights` entry). Each slab's inner face is exactly one
-// face of the room.
-inline Scene closed_room(double size, double rho, const std::string& lamp_json) {
+// point light `lamp_json` (a scene `lights` entry), with `extra` (e.g. `, "camera": {...}`)
+// added to the scene's top level. Each slab's inner face is exactly one face of the room.
+inline Scene closed_room(double size, double rho, const std::string& lamp_json,
+                         const std::string& extra = "") {
   std::ostringstream json;
   json.precision(17);
   const double t = 0.1, s = size;
@@ -33,7 +34,7 @@ inline Scene closed_room(double size, double rho, const std::string& lamp_json) 
   box("south", 0, -t, 0, s, 0, s);
   json << ',';
   box("north", 0, s, 0, s, s + t, s);
-  json << "], \"lights\": [" << lamp_json << "]}";
+  json << "], \"lights\": [" << lamp_json << "]" << extra << "}";
   return parse_scene(json.str(), "closed-room.json");
 }
 

@@ -121,4 +121,15 @@ BOOST_AUTO_TEST_CASE(levels_are_nice_numbers) {
   BOOST_TEST(isolux_levels(5, 5).empty());
 }
 
+BOOST_AUTO_TEST_CASE(picture_levels_leave_out_the_extreme_two_percent) {
+  // 1, 2, ..., 1000 lx and ten unlit pixels: the 2nd and 98th percentiles of the positive
+  // values are the values of rank floor(0.02 x 999) = 19 and floor(0.98 x 999) = 979, 20 and
+  // 980 lx; 980 / 20 > 20, so the 1-2-5 series strictly between them.
+  std::vector<double> values(10, 0.0);
+  for (int k = 1000; k >= 1; --k) values.push_back(k);
+  BOOST_TEST(picture_levels(values) == (std::vector<double>{50, 100, 200, 500}),
+             boost::test_tools::per_element());
+  BOOST_TEST(picture_levels({0, 0}).empty());
+}
+
 BOOST_AUTO_TEST_SUITE_END()

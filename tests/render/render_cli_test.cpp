@@ -3,9 +3,11 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
+#include "penumbra/base/colour_scale.h"
 #include "penumbra/render/isolux_belts.h"
 #include "support/fixtures.h"
 
@@ -29,7 +31,7 @@ BOOST_AUTO_TEST_CASE(writes_the_image_and_one_row_per_pixel) {
   std::istringstream csv(read_text(dir / "edge.csv"));
   std::string line;
   std::getline(csv, line);
-  BOOST_TEST(line == "px,py,object,face,E,L");
+  BOOST_TEST(line == "px,py,object,face,E,L,E_indirect");
   std::size_t rows = 0, floor = 0, nothing = 0;
   while (std::getline(csv, line)) {
     ++rows;
@@ -149,6 +151,49 @@ BOOST_AUTO_TEST_CASE(bad_input_exits_2_and_writes_nothing) {
                           image.string())
                  .status == 2);  // no camera
   BOOST_TEST(!std::filesystem::exists(image));
+}
+
+BOOST_AUTO_TEST_CASE(false_colour_paints_every_seen_pixel_in_the_colour_of_its_lux) {
+  // docs/render.md, "False colour": with levels spanning more than a factor 20 the scale is
+  // logarithmic, hue 240 degrees (blue) at the lowest level to 0 (red) at the largest E
+  // seen; every pixel that sees something outside the legend box takes the colour of its E.
+  const auto dir = scratch_dir("render-cli-false-colour");
+  const std::string scene = fixture("scenes/render-interior.json").string();
+  const auto result =
+      run_penumbra("render " + scene + " -o " + (dir / "fc.png").string() +
+                   " --width 160 --height 120 --false-colour illuminance" +
+                   " --levels 1,10,100,1000 --values " + (dir / "values.csv").string());
+  BOOST_TEST_REQUIRE(result.status == 0, result.err);
+  BOOST_TEST(
+      result.out.find("false colour illuminance levels 1 10 100 1000 lx") != std::string::npos,
+      result.out);
+  const auto image = penumbra::test::read_png(dir / "fc.png");
+  std::istringstream csv(read_text(dir / "values.csv"));
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::array<std::string, 5>> rows;
+  double top = 1000;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> field;
+    std::istringstream row(line);
+    for (std::string item; std::getline(row, item, ',');) field.push_back(item);
+    rows.push_back({field[0], field[1], field[2], field[4], ""});
+    if (!field[2].empty()) top = std::max(top, std::stod(field[4]));
+  }
+  std::size_t checked = 0;
+  for (const auto& row : rows) {
+    const unsigned i = std::stoul(row[0]), j = std::stoul(row[1]);
+    if (row[2].empty() || j < 40) continue;  // nothing seen, or the legend's rows
+    const double e = std::stod(row[3]);
+    const double fraction = e > 1 ? std::log(e) / std::log(top) : 0;
+    const penumbra::Rgb8 expected = penumbra::scale_colour(fraction);
+    const std::size_t at = 3 * (j * 160 + i);
+    for (int c = 0; c < 3; ++c)
+      BOOST_TEST(std::abs(int(image.rgb[at + c]) - int(expected[c])) <= 2,
+                 "pixel " << i << ", " << j << " E " << e);
+    ++checked;
+  }
+  BOOST_TEST(checked > 5000u);
 }
 
 BOOST_AUTO_TEST_CASE(belt_colours_run_from_blue_to_red) {

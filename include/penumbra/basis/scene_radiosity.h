@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "penumbra/base/colour.h"
+
 #include "penumbra/basis/basis_luminances.h"
 
 namespace penumbra {
@@ -28,11 +30,9 @@ struct SceneRadiosity {
 // (options.degree and compression are not used).
 SceneRadiosity solve_scene_radiosity(const Scene& scene, const BasisOptions& options);
 
-// returns the photometric value of per-channel illuminance: 0.2126 R + 0.7152 G + 0.0722 B
-// (Rec. 709 luminance weights; equal channels give that value).
-inline constexpr double kLuminanceWeights[3] = {0.2126, 0.7152, 0.0722};
+// returns the photometric value of per-channel illuminance (base/colour.h's weights).
 inline double photometric(double r, double g, double b) {
-  return kLuminanceWeights[0] * r + kLuminanceWeights[1] * g + kLuminanceWeights[2] * b;
+  return photometric_value({r, g, b});
 }
 template <typename Row>
 double photometric(const Row& rgb) {

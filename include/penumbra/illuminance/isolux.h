@@ -23,6 +23,12 @@ struct IsoluxLine {
 // otherwise about eight equal steps of 1, 2 or 5 x 10^k. Empty when maximum <= minimum.
 std::vector<double> isolux_levels(double minimum, double maximum);
 
+// returns the levels of a picture's values (lux or cd/m^2, one per pixel that sees
+// something; reordered): isolux_levels between the 2nd and the 98th percentile of the
+// positive values, so that a few pixels in deep shade or in the sun's glare do not stretch
+// the levels past what most of the picture shows. Empty when there are no positive values.
+std::vector<double> picture_levels(std::vector<double> values);
+
 // traces the isolux lines of the grid's total illuminance at each level by marching
 // squares over the cell centres, interpolating linearly along the square edges. Squares
 // with a corner inside an object are skipped; a saddle square is resolved by the mean of

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -42,6 +43,10 @@ struct TraceOptions {
   std::uint64_t seed = 1980;  // the seed of every random choice (reproducible images)
   // Bézier patch objects: the patches (Newton on the bicubic) or their tessellation
   PatchSurfaces patches = PatchSurfaces::exact;
+  // the indirect (interreflected) illuminance per channel (lux) at a point of face `face` of
+  // object `object` (basis/indirect_light.h gives it from a radiosity solve), added to E of
+  // eq. (2) at every diffuse hit on a face seen from outside; empty: none (Whitted's I_a = 0)
+  std::function<Colour(std::size_t object, std::size_t face, const Vec3d& point)> indirect;
 };
 
 // Rays cast, by kind (Whitted's ray tree: camera, shadow, R and P rays).

@@ -12,9 +12,13 @@
 // the edge of a shadow worth less than that threshold.
 //
 // A diffuse face's luminance is L = rho E / pi (cd/m^2), tinted per channel by its
-// material's colour.
+// material's colour. With an indirect light field (RenderOptions::indirect), E is the exact
+// direct illuminance (interpolated along runs as above) plus the field's indirect
+// illuminance evaluated at every pixel, per channel: radiance_c = rho color_c (E_direct +
+// E_indirect,c) / pi, and L uses the photometric value of E_indirect (docs/render.md).
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,9 +29,16 @@
 
 namespace penumbra::render {
 
+// The indirect (interreflected) illuminance per channel (lux) at a point of face `face` of
+// object `object`, added to the exact direct light of every pixel (basis/indirect_light.h
+// gives it from a radiosity solve; the render layer does not depend on how).
+using IndirectLightField =
+    std::function<Colour(std::size_t object, std::size_t face, const Vec3d& point)>;
+
 struct RenderOptions {
-  int interval = 3;      // K: evaluate every K pixels along a run (1: every pixel)
-  bool parallel = true;  // TBB across scan lines
+  int interval = 3;             // K: evaluate every K pixels along a run (1: every pixel)
+  bool parallel = true;         // TBB across scan lines
+  IndirectLightField indirect;  // empty: direct light only
 };
 
 struct RenderedImage {
@@ -35,6 +46,7 @@ struct RenderedImage {
   int height = 0;
   VisibilityMap visibility;
   std::vector<double> illuminance;     // E, lux, per pixel; 0 where nothing is seen
+  std::vector<double> indirect;        // the indirect part of E (photometric), lux, per pixel
   std::vector<double> luminance;       // L = rho E / pi, cd/m^2, per pixel
   std::vector<Colour> radiance;        // L tinted by the material colour, per channel
   std::size_t evaluations = 0;         // exact illuminance evaluations
