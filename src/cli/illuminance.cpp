@@ -175,10 +175,25 @@ int run_workplane(const IlluminanceArguments& arguments, const Scene& scene) {
       write_values(out, scene, il::workplane_points(grid), values.values);
     });
   }
+  std::string boundary_report;
   if (!arguments.svg.empty()) {
     if (levels.empty()) levels = il::isolux_levels(statistics.minimum, statistics.maximum);
-    write_atomically(arguments.svg,
-                     [&](std::ostream& out) { io::write_isolux_svg(out, scene, values, levels); });
+    // docs/illuminance.md, "Exact isolux lines"
+    io::IsoluxBoundaries boundaries;
+    il::WorkplaneEdges edges = il::workplane_shadow_edges(scene, *arguments.workplane, region);
+    for (const std::string& warning : edges.warnings)
+      std::cerr << "penumbra: warning: no shadow boundaries on the work plane for " << warning
+                << "\n";
+    boundaries.edges = std::move(edges.edges);
+    boundaries.refinement =
+        il::refine_workplane(il::IlluminanceSolver(scene), values, boundaries.edges);
+    write_atomically(arguments.svg, [&](std::ostream& out) {
+      io::write_isolux_svg(out, scene, values, levels, boundaries);
+    });
+    boundary_report = "isolux plot: " + std::to_string(boundaries.edges.size()) +
+                      " exact boundary edges, " +
+                      std::to_string(boundaries.refinement.squares.size()) + " squares refined, " +
+                      std::to_string(boundaries.refinement.evaluations) + " more evaluations\n";
   }
 
   std::ostringstream report;
@@ -195,7 +210,7 @@ int run_workplane(const IlluminanceArguments& arguments, const Scene& scene) {
     report << "  " << scene.lights[light].name << ": min " << low << " lx, average " << average
            << " lx, max " << high << " lx\n";
   }
-  std::cout << report.str();
+  std::cout << report.str() << boundary_report;
   return 0;
 }
 

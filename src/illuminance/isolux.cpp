@@ -94,66 +94,127 @@ std::vector<double> isolux_levels(double minimum, double maximum) {
   return levels;
 }
 
+namespace {
+
+// Marching squares on one square: corners counter-clockwise from the lower left, edge k from
+// corner k to k + 1 with the id edge_id[k] (shared with the neighbour across it, so that
+// join() links the segments). Appends the square's segments at level.
+void march(const PlanPoint (&at)[4], const double (&value)[4], const long (&edge_id)[4],
+           double level, std::vector<Segment>& segments) {
+  int mask = 0;
+  for (int k = 0; k < 4; ++k)
+    if (value[k] >= level) mask |= 1 << k;
+  if (mask == 0 || mask == 15) return;
+  const auto crossing = [&](int k) {
+    const int a = k, b = (k + 1) % 4;
+    const double t = (level - value[a]) / (value[b] - value[a]);
+    return PlanPoint{at[a][0] + t * (at[b][0] - at[a][0]), at[a][1] + t * (at[b][1] - at[a][1])};
+  };
+  const auto add = [&](int e, int f) {
+    segments.push_back({edge_id[e], edge_id[f], crossing(e), crossing(f)});
+  };
+  // An edge is crossed when its two corners differ; a square has two or four.
+  std::vector<int> crossed;
+  for (int k = 0; k < 4; ++k)
+    if (((mask >> k) & 1) != ((mask >> ((k + 1) % 4)) & 1)) crossed.push_back(k);
+  if (crossed.size() == 2) {
+    add(crossed[0], crossed[1]);
+    return;
+  }
+  // Saddle (corners 0 and 2 against 1 and 3): the mean decides which diagonal pair is
+  // joined. Edges 3 and 0 meet at corner 0, edges 1 and 2 at corner 2.
+  const bool centre_above = (value[0] + value[1] + value[2] + value[3]) / 4 >= level;
+  const bool corner0_above = (mask & 1) != 0;
+  if (centre_above == corner0_above) {
+    add(0, 1);  // cut off corner 1
+    add(2, 3);  // and corner 3
+  } else {
+    add(3, 0);  // cut off corner 0
+    add(1, 2);  // and corner 2
+  }
+}
+
+// The squares of an n_x x n_y lattice of nodes, with ids of their edges from first_id on:
+// node (a, b)'s edge to (a + 1, b) is first_id + 2 (b n_x + a), to (a, b + 1) one more.
+struct Lattice {
+  std::size_t nx;
+  long first_id;
+  long horizontal(std::size_t a, std::size_t b) const {
+    return first_id + 2 * static_cast<long>(b * nx + a);
+  }
+  long vertical(std::size_t a, std::size_t b) const { return horizontal(a, b) + 1; }
+  void edges(std::size_t a, std::size_t b, long (&id)[4]) const {
+    id[0] = horizontal(a, b);
+    id[1] = vertical(a + 1, b);
+    id[2] = horizontal(a, b + 1);
+    id[3] = vertical(a, b);
+  }
+};
+
+}  // namespace
+
 std::vector<IsoluxLine> isolux_lines(const WorkplaneValues& values,
                                      const std::vector<double>& levels) {
+  return isolux_lines(values, levels, WorkplaneRefinement{});
+}
+
+std::vector<IsoluxLine> isolux_lines(const WorkplaneValues& values,
+                                     const std::vector<double>& levels,
+                                     const WorkplaneRefinement& refinement) {
   const WorkplaneGrid& grid = values.grid;
   std::vector<IsoluxLine> lines;
   if (grid.columns < 2 || grid.rows < 2) return lines;
   const auto index = [&](std::size_t i, std::size_t j) { return j * grid.columns + i; };
-  const auto horizontal = [&](std::size_t i, std::size_t j) {
-    return 2 * static_cast<long>(index(i, j));
-  };
-  const auto vertical = [&](std::size_t i, std::size_t j) {
-    return 2 * static_cast<long>(index(i, j)) + 1;
-  };
+  const Lattice coarse{grid.columns, 0};
+  std::vector<char> refined((grid.columns - 1) * (grid.rows - 1), 0);
+  for (const RefinedSquare& square : refinement.squares)
+    refined[square.j * (grid.columns - 1) + square.i] = 1;
+  const int n = refinement.refine, side = n + 1;
   for (double level : levels) {
     std::vector<Segment> segments;
     for (std::size_t j = 0; j + 1 < grid.rows; ++j)
       for (std::size_t i = 0; i + 1 < grid.columns; ++i) {
-        // Corners counter-clockwise from the lower left; edge k runs from corner k to k + 1.
+        if (refined[j * (grid.columns - 1) + i]) continue;
         const std::size_t corner[4] = {index(i, j), index(i + 1, j), index(i + 1, j + 1),
                                        index(i, j + 1)};
-        const long edge_id[4] = {horizontal(i, j), vertical(i + 1, j), horizontal(i, j + 1),
-                                 vertical(i, j)};
+        long edge_id[4];
+        coarse.edges(i, j, edge_id);
         double value[4];
-        int mask = 0;
+        PlanPoint at[4];
         bool skip = false;
         for (int k = 0; k < 4; ++k) {
-          const PointIlluminance& at = values.values[corner[k]];
-          skip = skip || at.inside.has_value();
-          value[k] = at.total;
-          if (value[k] >= level) mask |= 1 << k;
+          const PointIlluminance& e = values.values[corner[k]];
+          skip = skip || e.inside.has_value();
+          value[k] = e.total;
+          const Vec3d p = grid.point(corner[k]);
+          at[k] = {p[0], p[1]};
         }
-        if (skip || mask == 0 || mask == 15) continue;
-        const auto crossing = [&](int k) {
-          const int a = k, b = (k + 1) % 4;
-          const Vec3d pa = grid.point(corner[a]), pb = grid.point(corner[b]);
-          const double t = (level - value[a]) / (value[b] - value[a]);
-          return PlanPoint{pa[0] + t * (pb[0] - pa[0]), pa[1] + t * (pb[1] - pa[1])};
-        };
-        const auto add = [&](int e, int f) {
-          segments.push_back({edge_id[e], edge_id[f], crossing(e), crossing(f)});
-        };
-        // An edge is crossed when its two corners differ; a square has two or four.
-        std::vector<int> crossed;
-        for (int k = 0; k < 4; ++k)
-          if (((mask >> k) & 1) != ((mask >> ((k + 1) % 4)) & 1)) crossed.push_back(k);
-        if (crossed.size() == 2) {
-          add(crossed[0], crossed[1]);
-          continue;
-        }
-        // Saddle (corners 0 and 2 against 1 and 3): the mean decides which diagonal pair
-        // is joined. Edges 3 and 0 meet at corner 0, edges 1 and 2 at corner 2.
-        const bool centre_above = (value[0] + value[1] + value[2] + value[3]) / 4 >= level;
-        const bool corner0_above = (mask & 1) != 0;
-        if (centre_above == corner0_above) {
-          add(0, 1);  // cut off corner 1
-          add(2, 3);  // and corner 3
-        } else {
-          add(3, 0);  // cut off corner 0
-          add(1, 2);  // and corner 2
-        }
+        if (!skip) march(at, value, edge_id, level, segments);
       }
+    // docs/illuminance.md, "Exact isolux lines": inside a refined square, only the
+    // sub-squares no boundary meets, so no line crosses a boundary
+    for (std::size_t s = 0; s < refinement.squares.size(); ++s) {
+      const RefinedSquare& square = refinement.squares[s];
+      const Lattice fine{
+          static_cast<std::size_t>(side),
+          2 * static_cast<long>(grid.size()) + 2 * static_cast<long>(s) * side * side};
+      for (int b = 0; b < n; ++b)
+        for (int a = 0; a < n; ++a) {
+          if (square.cut[static_cast<std::size_t>(b * n + a)]) continue;
+          const int node[4][2] = {{a, b}, {a + 1, b}, {a + 1, b + 1}, {a, b + 1}};
+          double value[4];
+          PlanPoint at[4];
+          bool skip = false;
+          for (int k = 0; k < 4; ++k) {
+            value[k] = square.values[static_cast<std::size_t>(node[k][1] * side + node[k][0])];
+            skip = skip || std::isnan(value[k]);
+            at[k] = WorkplaneRefinement::corner(grid, square, n, node[k][0], node[k][1]);
+          }
+          long edge_id[4];
+          fine.edges(static_cast<std::size_t>(a), static_cast<std::size_t>(b), edge_id);
+          if (!skip) march(at, value, edge_id, level, segments);
+        }
+    }
     for (IsoluxLine& line : join(level, segments)) lines.push_back(std::move(line));
   }
   return lines;

@@ -44,8 +44,8 @@ std::vector<illuminance::PlanPoint> plan_outline(const ConvexPolyhedron& solid) 
 }  // namespace
 
 void write_isolux_svg(std::ostream& out, const Scene& scene,
-                      const illuminance::WorkplaneValues& values,
-                      const std::vector<double>& levels) {
+                      const illuminance::WorkplaneValues& values, const std::vector<double>& levels,
+                      const IsoluxBoundaries& boundaries) {
   const illuminance::WorkplaneGrid& grid = values.grid;
   const illuminance::PlanRegion& region = grid.region;
   const double width = region.x1 - region.x0, depth = region.y1 - region.y0;
@@ -86,6 +86,25 @@ void write_isolux_svg(std::ostream& out, const Scene& scene,
         << svg_number(grid.cell_width * scale + 0.3) << "\" height=\""
         << svg_number(grid.cell_depth * scale + 0.3) << "\" fill=\"" << fill << "\"/>\n";
   }
+  // where a boundary crosses, the refined squares' sub-squares in the band of the mean of
+  // their corners (each sub-square's corners lie on one side of every boundary but for the
+  // sub-squares a boundary meets, whose colour the drawn boundary covers)
+  const illuminance::WorkplaneRefinement& refinement = boundaries.refinement;
+  const int n = refinement.refine;
+  for (const illuminance::RefinedSquare& square : refinement.squares)
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a) {
+        double sum = 0;
+        for (const auto& [da, db] : {std::pair{0, 0}, {1, 0}, {0, 1}, {1, 1}})
+          sum += square.values[static_cast<std::size_t>((b + db) * (n + 1) + a + da)];
+        const illuminance::PlanPoint p =
+            illuminance::WorkplaneRefinement::corner(grid, square, n, a, b + 1);
+        const std::string fill =
+            std::isnan(sum) ? "#c8c8c8" : hex_colour(colour_of_band(band_of(sum / 4)));
+        out << "<rect x=\"" << svg_number(sx(p[0])) << "\" y=\"" << svg_number(sy(p[1]))
+            << "\" width=\"" << svg_number(grid.cell_width / n * scale + 0.1) << "\" height=\""
+            << svg_number(grid.cell_depth / n * scale + 0.1) << "\" fill=\"" << fill << "\"/>\n";
+      }
   out << "</g>\n";
 
   // The plan: every object's outline seen from above, lower objects first, then by name (the
@@ -141,7 +160,8 @@ void write_isolux_svg(std::ostream& out, const Scene& scene,
   out << "</g>\n";
 
   // Isolux lines, a label on each line long enough to carry one (labels kept apart).
-  const std::vector<illuminance::IsoluxLine> lines = illuminance::isolux_lines(values, levels);
+  const std::vector<illuminance::IsoluxLine> lines =
+      illuminance::isolux_lines(values, levels, boundaries.refinement);
   out << "<g id=\"isolux\" fill=\"none\" stroke-width=\"1.6\" stroke-linejoin=\"round\">\n";
   for (const illuminance::IsoluxLine& line : lines) {
     const std::size_t band = band_of(line.level);
@@ -153,6 +173,14 @@ void write_isolux_svg(std::ostream& out, const Scene& scene,
       out << ' ' << svg_number(sx(line.points[0][0])) << ',' << svg_number(sy(line.points[0][1]));
     out << "\"/>\n";
   }
+  // the exact shadow (solid) and umbra (dashed) boundaries, across which E may jump
+  out << "</g>\n<g id=\"shadow-boundaries\" stroke=\"#202020\" stroke-width=\"1\">\n";
+  for (const illuminance::PlanEdge& edge : boundaries.edges)
+    out << "<line x1=\"" << svg_number(sx(edge.a[0])) << "\" y1=\"" << svg_number(sy(edge.a[1]))
+        << "\" x2=\"" << svg_number(sx(edge.b[0])) << "\" y2=\"" << svg_number(sy(edge.b[1]))
+        << (edge.umbra ? "\" stroke-dasharray=\"4 2" : "") << "\"><title>"
+        << escape_xml(scene.lights[edge.light].name) << (edge.umbra ? " umbra" : " shadow")
+        << "</title></line>\n";
   out << "</g>\n<g id=\"isolux-labels\" font-size=\"10\" text-anchor=\"middle\" fill=\"black\" "
          "stroke=\"white\" stroke-width=\"3\" paint-order=\"stroke\">\n";
   std::vector<illuminance::PlanPoint> placed;

@@ -7,10 +7,9 @@
 #include <vector>
 
 #include "penumbra/illuminance/workplane.h"
+#include "penumbra/illuminance/workplane_edges.h"
 
 namespace penumbra::illuminance {
-
-using PlanPoint = std::array<double, 2>;
 
 struct IsoluxLine {
   double level = 0;  // lux
@@ -35,5 +34,14 @@ std::vector<double> picture_levels(std::vector<double> values);
 // its corners. Segments are joined into polylines.
 std::vector<IsoluxLine> isolux_lines(const WorkplaneValues& values,
                                      const std::vector<double>& levels);
+
+// the same, never across a shadow or umbra boundary (docs/illuminance.md, "Exact isolux
+// lines"): the squares of refinement are not traced whole; inside each, the sub-squares no
+// boundary meets are traced with the exact values at their corners, so a line stops within
+// one sub-square (spacing / refine) of a boundary, and the boundary itself, drawn from the
+// exact polygons, is where the field passes the levels between its two sides.
+std::vector<IsoluxLine> isolux_lines(const WorkplaneValues& values,
+                                     const std::vector<double>& levels,
+                                     const WorkplaneRefinement& refinement);
 
 }  // namespace penumbra::illuminance
