@@ -5,6 +5,8 @@
 #include <map>
 #include <numeric>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 #include "penumbra/base/input_error.h"
 #include "penumbra/scene/scene.h"
@@ -62,6 +64,68 @@ Point2d centroid(const Polygon2d& polygon, double area) {
   return {cx / (6 * area), cy / (6 * area)};
 }
 
+// clips a convex polygon to the side of the line through a and b where
+// side * cross(b - a, p - a) >= 0.
+Polygon2d clip_half(const Polygon2d& polygon, const Point2d& a, const Point2d& b, double side) {
+  const auto f = [&](const Point2d& p) {
+    return side * ((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]));
+  };
+  Polygon2d out;
+  const std::size_t n = polygon.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Point2d& p = polygon[k];
+    const Point2d& q = polygon[(k + 1) % n];
+    const double fp = f(p), fq = f(q);
+    if (fp >= 0) out.push_back(p);
+    if ((fp >= 0) != (fq >= 0)) {
+      const double t = fp / (fp - fq);
+      out.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+    }
+  }
+  return out;
+}
+
+// whether point lies inside the region of rings by the even-odd rule.
+bool inside_rings(const std::vector<Polygon2d>& rings, const Point2d& point) {
+  bool inside = false;
+  for (const Polygon2d& ring : rings)
+    for (std::size_t k = 0, j = ring.size() - 1; k < ring.size(); j = k++)
+      if ((ring[k][1] > point[1]) != (ring[j][1] > point[1]) &&
+          point[0] < ring[j][0] + (ring[k][0] - ring[j][0]) * (point[1] - ring[j][1]) /
+                                      (ring[k][1] - ring[j][1]))
+        inside = !inside;
+  return inside;
+}
+
+// cuts a convex cell along the lines of every edge whose box overlaps the piece's (pieces
+// thinner than a millionth of the cell's area are not made); the pieces stay convex.
+std::vector<Polygon2d> split_cell(const Polygon2d& cell,
+                                  const std::vector<std::array<Point2d, 2>>& edges) {
+  std::vector<Polygon2d> pieces{cell};
+  const double smallest = 1e-6 * signed_area(cell);
+  for (const auto& [a, b] : edges) {
+    std::vector<Polygon2d> next;
+    for (const Polygon2d& piece : pieces) {
+      double lo[2] = {piece[0][0], piece[0][1]}, hi[2] = {lo[0], lo[1]};
+      for (const Point2d& p : piece)
+        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+      const bool overlaps = std::max(a[0], b[0]) >= lo[0] && std::min(a[0], b[0]) <= hi[0] &&
+                            std::max(a[1], b[1]) >= lo[1] && std::min(a[1], b[1]) <= hi[1];
+      const Polygon2d left = overlaps ? clip_half(piece, a, b, 1) : Polygon2d{};
+      const Polygon2d right = overlaps ? clip_half(piece, a, b, -1) : Polygon2d{};
+      if (left.size() >= 3 && right.size() >= 3 && signed_area(left) > smallest &&
+          signed_area(right) > smallest) {
+        next.push_back(left);
+        next.push_back(right);
+      } else {
+        next.push_back(piece);
+      }
+    }
+    pieces = std::move(next);
+  }
+  return pieces;
+}
+
 // returns the number of cells of size at most size across extent (at least one).
 int cell_count(double extent, double size) {
   const double cells = std::ceil(extent / size * (1 - 1e-12));
@@ -70,7 +134,7 @@ int cell_count(double extent, double size) {
 
 }  // namespace
 
-PatchMesh PatchMesh::subdivide(const Scene& scene, double patch_size) {
+PatchMesh PatchMesh::subdivide(const Scene& scene, double patch_size, const MeshBreaks& breaks) {
   if (!(patch_size > 0) || !std::isfinite(patch_size))
     throw std::invalid_argument("patch size must be positive and finite");
   PatchMesh mesh;
@@ -120,14 +184,34 @@ PatchMesh PatchMesh::subdivide(const Scene& scene, double patch_size) {
                              std::to_string(max_patches) +
                              " patches: give a larger one (docs/reliability.md, \"Limits\")");
       grid.cells.assign(static_cast<std::size_t>(grid.nu) * grid.nv, -1);
+      // the breaks of this face in its frame: each region's rings, and every ring edge
+      std::vector<std::vector<Polygon2d>> regions;
+      std::vector<std::array<Point2d, 2>> edges;
+      if (const auto found = breaks.find({grid.object, grid.face}); found != breaks.end()) {
+        for (const auto& rings : found->second.regions) {
+          std::vector<Polygon2d>& region = regions.emplace_back();
+          for (const auto& ring : rings) {
+            Polygon2d& flat = region.emplace_back();
+            for (const Vec3d& p : ring) {
+              const Vec3d d = p - grid.origin;
+              flat.push_back({dot(d, grid.u), dot(d, grid.v)});
+            }
+            for (std::size_t k = 0; k < flat.size(); ++k)
+              edges.push_back({flat[k], flat[(k + 1) % flat.size()]});
+          }
+        }
+        grid.pieces.assign(grid.cells.size(), 0);
+      }
       // vertices of this face, shared between its cells: keyed on their frame coordinates
       // rounded to a billionth of a cell (clipping the same edge twice gives equal doubles;
-      // the rounding only merges the rare corner computed in two orders).
-      std::map<std::pair<long long, long long>, std::uint32_t> shared;
+      // the rounding only merges the rare corner computed in two orders) and on the side of
+      // every break region the patch lies on (a vertex on a break is one per side)
+      std::map<std::tuple<long long, long long, std::string>, std::uint32_t> shared;
       const double quantum = 1e-9 * std::max(grid.du, grid.dv);
+      std::string side;
       const auto vertex_of = [&](const Point2d& p) {
-        const std::pair<long long, long long> key{std::llround(p[0] / quantum),
-                                                  std::llround(p[1] / quantum)};
+        const std::tuple<long long, long long, std::string> key{std::llround(p[0] / quantum),
+                                                                std::llround(p[1] / quantum), side};
         const auto found = shared.find(key);
         if (found != shared.end()) return found->second;
         const auto id = static_cast<std::uint32_t>(mesh.vertices_.size());
@@ -146,26 +230,33 @@ PatchMesh PatchMesh::subdivide(const Scene& scene, double patch_size) {
           cell = clip(cell, 1, line(grid.v0, grid.dv, b, grid.nv, hi[1]), 1);
           cell = clip(cell, 1, line(grid.v0, grid.dv, b + 1, grid.nv, hi[1]), -1);
           if (cell.size() < 3) continue;
-          const double area = signed_area(cell);
-          if (!(area > 0)) continue;
-          Patch patch;
-          patch.object = grid.object;
-          patch.face = grid.face;
-          const Point2d c = centroid(cell, area);
-          patch.centre = grid.origin + c[0] * grid.u + c[1] * grid.v;
-          patch.normal = normal;
-          patch.area = area;
-          patch.reflectance = reflectance;
-          for (const Point2d& p : cell) {
-            const std::uint32_t id = vertex_of(p);
-            if (patch.vertices.empty() ||
-                (patch.vertices.back() != id && patch.vertices.front() != id))
-              patch.vertices.push_back(id);
+          if (!(signed_area(cell) > 0)) continue;
+          const std::size_t k = static_cast<std::size_t>(a) + static_cast<std::size_t>(grid.nu) * b;
+          for (const Polygon2d& piece :
+               edges.empty() ? std::vector<Polygon2d>{cell} : split_cell(cell, edges)) {
+            const double area = signed_area(piece);
+            if (!(area > 0)) continue;
+            Patch patch;
+            patch.object = grid.object;
+            patch.face = grid.face;
+            const Point2d c = centroid(piece, area);
+            patch.centre = grid.origin + c[0] * grid.u + c[1] * grid.v;
+            patch.normal = normal;
+            patch.area = area;
+            patch.reflectance = reflectance;
+            side.clear();
+            for (const auto& region : regions) side += inside_rings(region, c) ? '1' : '0';
+            for (const Point2d& p : piece) {
+              const std::uint32_t id = vertex_of(p);
+              if (patch.vertices.empty() ||
+                  (patch.vertices.back() != id && patch.vertices.front() != id))
+                patch.vertices.push_back(id);
+            }
+            if (patch.vertices.size() < 3) continue;
+            if (grid.cells[k] < 0) grid.cells[k] = static_cast<std::int64_t>(mesh.patches_.size());
+            if (!grid.pieces.empty()) ++grid.pieces[k];
+            mesh.patches_.push_back(std::move(patch));
           }
-          if (patch.vertices.size() < 3) continue;
-          grid.cells[static_cast<std::size_t>(a) + static_cast<std::size_t>(grid.nu) * b] =
-              static_cast<std::int64_t>(mesh.patches_.size());
-          mesh.patches_.push_back(std::move(patch));
         }
       mesh.grids_.push_back(std::move(grid));
     }
@@ -230,9 +321,29 @@ std::optional<std::uint32_t> PatchMesh::locate(std::uint32_t object, std::uint32
   };
   const int a = cell_index(dot(d, grid.u), grid.u0, grid.du, grid.nu);
   const int b = cell_index(dot(d, grid.v), grid.v0, grid.dv, grid.nv);
-  const std::int64_t direct =
-      grid.cells[static_cast<std::size_t>(a) + grid.nu * static_cast<std::size_t>(b)];
-  if (direct >= 0) return static_cast<std::uint32_t>(direct);
+  const std::size_t cell = static_cast<std::size_t>(a) + grid.nu * static_cast<std::size_t>(b);
+  const std::int64_t direct = grid.cells[cell];
+  if (direct >= 0 && (grid.pieces.empty() || grid.pieces[cell] <= 1))
+    return static_cast<std::uint32_t>(direct);
+  if (direct >= 0) {
+    // a cell cut along breaks: the piece holding the point, or the nearest piece centre
+    const auto first = static_cast<std::uint32_t>(direct);
+    std::uint32_t best = first;
+    double best_distance = INFINITY;
+    for (std::uint32_t p = first; p < first + grid.pieces[cell]; ++p) {
+      const Patch& piece = patches_[p];
+      bool holds = true;
+      for (std::size_t k = 0; k < piece.vertices.size() && holds; ++k) {
+        const Vec3d& from = vertices_[piece.vertices[k]];
+        const Vec3d& to = vertices_[piece.vertices[(k + 1) % piece.vertices.size()]];
+        holds = dot(piece.normal, cross(to - from, point - from)) >= 0;
+      }
+      if (holds) return p;
+      const Vec3d away = piece.centre - point;
+      if (dot(away, away) < best_distance) best = p, best_distance = dot(away, away);
+    }
+    return best;
+  }
   // a point on the face whose cell kept no patch (a cell clipped to nothing by rounding):
   // the nearest patch centre among the neighbouring cells.
   std::optional<std::uint32_t> best;

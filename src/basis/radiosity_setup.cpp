@@ -1,6 +1,7 @@
 #include "radiosity_setup.h"
 
 #include "penumbra/base/input_error.h"
+#include "penumbra/basis/discontinuity_mesh.h"
 #include "penumbra/scene/scene.h"
 
 namespace penumbra::basis::detail {
@@ -29,7 +30,9 @@ RadiositySetup prepare_radiosity(const Scene& scene, const BasisOptions& options
                          "radiosity needs reflectance x colour below 1 in every channel");
   RadiositySetup setup;
   auto start = std::chrono::steady_clock::now();
-  setup.mesh = PatchMesh::subdivide(scene, options.patch_size);
+  setup.mesh = PatchMesh::subdivide(
+      scene, options.patch_size,
+      options.discontinuity ? shadow_breaks(scene, options.parallel) : MeshBreaks{});
   setup.timings.mesh_s = seconds_since(start);
   start = std::chrono::steady_clock::now();
   {

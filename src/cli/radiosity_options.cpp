@@ -8,7 +8,7 @@
 
 namespace penumbra::cli {
 
-void add_radiosity_options(CLI::App* verb, RadiosityArguments& arguments) {
+void add_radiosity_options(CLI::App* verb, RadiosityArguments& arguments, bool discontinuity_flag) {
   basis::BasisOptions& options = arguments.options;
   verb->add_option("--patch-size", options.patch_size, "largest patch edge (m)")
       ->capture_default_str();
@@ -24,6 +24,9 @@ void add_radiosity_options(CLI::App* verb, RadiosityArguments& arguments) {
       ->capture_default_str();
   verb->add_option("--max-iterations", options.radiosity.max_iterations, "most sweeps")
       ->capture_default_str();
+  if (discontinuity_flag)
+    verb->add_flag("!--no-discontinuity", options.discontinuity,
+                   "do not cut the patches along the exact shadow edges (discontinuity meshing)");
 }
 
 void finish_radiosity_options(RadiosityArguments& arguments) {
@@ -50,7 +53,8 @@ void add_indirect_options(CLI::App* verb, std::string& setting, RadiosityArgumen
                    "reflects), on, off")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "on", "off"}));
-  add_radiosity_options(verb, arguments);
+  arguments.options.discontinuity = false;
+  add_radiosity_options(verb, arguments, false);
 }
 
 bool wants_indirect(const std::string& setting, const Scene& scene,

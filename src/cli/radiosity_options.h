@@ -18,14 +18,18 @@ struct RadiosityArguments {
   std::string method = "rays";
 };
 
-// adds --patch-size, --form-factors, --rays, --seed, --tolerance and --max-iterations.
-void add_radiosity_options(CLI::App* verb, RadiosityArguments& arguments);
+// adds --patch-size, --form-factors, --rays, --seed, --tolerance and --max-iterations, and
+// with discontinuity_flag --no-discontinuity (discontinuity meshing is on by default).
+void add_radiosity_options(CLI::App* verb, RadiosityArguments& arguments,
+                           bool discontinuity_flag = true);
 
 // checks the values and fills options.form_factors.method; throws InputError.
 void finish_radiosity_options(RadiosityArguments& arguments);
 
 // adds --indirect auto|on|off (into setting) and the radiosity options: `render` and
-// `raytrace` add the interreflected light of a radiosity solve (docs/render.md, step 5).
+// `raytrace` add the interreflected light of a radiosity solve (docs/render.md, step 5), on a
+// mesh without discontinuity meshing (the indirect light is smooth; the direct light is
+// exact at every pixel anyway).
 void add_indirect_options(CLI::App* verb, std::string& setting, RadiosityArguments& arguments);
 
 // The most patches `--indirect auto` solves; beyond, it says so and leaves indirect light off

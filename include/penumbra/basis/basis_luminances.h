@@ -92,6 +92,8 @@ struct BasisOptions {
   double compression = 0;  // max relative Frobenius error of each block; 0 = none
   bool sigma = true;       // the stored coefficients use the sigma factors (eq. 12)
   bool parallel = true;
+  // cut the mesh along the exact shadow edges of every light (discontinuity_mesh.h)
+  bool discontinuity = true;
 };
 
 struct BasisTimings {

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -36,13 +37,25 @@ struct Patch {
   std::vector<std::uint32_t> vertices;  // convex polygon, counter-clockwise from outside
 };
 
+// Discontinuity meshing (docs/basis.md, "Discontinuity meshing"): the exact shadow regions of
+// the lights on one face, each as its rings (outer boundaries and holes, world points rounded
+// to doubles). subdivide() splits the patches of the face along the lines of the rings' edges
+// and shares a vertex only between patches on the same side of every region, so Gouraud
+// shading jumps at the edges instead of ramping across a patch.
+struct FaceBreaks {
+  std::vector<std::vector<std::vector<Vec3d>>> regions;  // region -> rings -> points
+};
+using MeshBreaks = std::map<std::pair<std::uint32_t, std::uint32_t>, FaceBreaks>;
+
 // How one face was cut: its frame and grid, so a point on the face finds its patch.
 struct FaceGrid {
   std::uint32_t object = 0, face = 0;
   Vec3d origin{}, u{}, v{};               // the face frame (u, v unit)
   double u0 = 0, v0 = 0, du = 1, dv = 1;  // cell (a, b) spans [u0 + a du, u0 + (a+1) du] x ...
   int nu = 0, nv = 0;
-  std::vector<std::int64_t> cells;  // nu * nv entries, a + nu b: patch index or -1
+  std::vector<std::int64_t> cells;    // nu * nv entries, a + nu b: first patch index or -1
+  std::vector<std::uint32_t> pieces;  // per cell, its patches (consecutive from cells[k]);
+                                      // empty: one each
 };
 
 // The most patches a mesh may have (docs/reliability.md, "Limits"): a basis holds, per patch
@@ -51,10 +64,11 @@ inline constexpr std::uint64_t max_patches = 500'000;
 
 class PatchMesh {
  public:
-  // cuts every face of scene into patches of edge at most patch_size (m, > 0).
+  // cuts every face of scene into patches of edge at most patch_size (m, > 0), each cut
+  // further along the breaks of its face (discontinuity meshing) when given.
   // Throws std::invalid_argument when patch_size is not positive and finite, InputError
   // ("--patch-size") when the faces' grids would hold more than max_patches cells.
-  static PatchMesh subdivide(const Scene& scene, double patch_size);
+  static PatchMesh subdivide(const Scene& scene, double patch_size, const MeshBreaks& breaks = {});
 
   // assembles a mesh from its parts (used when reading a basis file). Such a mesh has no
   // grids: locate() finds nothing, nearest_patch() works.
