@@ -13,16 +13,11 @@ IndirectLight::IndirectLight(SceneRadiosity solved) : solved_(std::move(solved))
   per_vertex_ = solved_.mesh.vertex_average(per_patch_);
 }
 
-std::optional<std::uint32_t> IndirectLight::patch_at(std::size_t object, std::size_t face,
-                                                     const Vec3d& point) const {
-  return solved_.mesh.locate(static_cast<std::uint32_t>(object), static_cast<std::uint32_t>(face),
-                             point);
-}
-
 Colour IndirectLight::at(std::size_t object, std::size_t face, const Vec3d& point) const {
-  const std::optional<std::uint32_t> found = patch_at(object, face, point);
-  if (!found) return {0, 0, 0};
   const PatchMesh& mesh = solved_.mesh;
+  const std::optional<std::uint32_t> found =
+      mesh.locate(static_cast<std::uint32_t>(object), static_cast<std::uint32_t>(face), point);
+  if (!found) return {0, 0, 0};
   const Patch& patch = mesh.patches()[*found];
   const std::vector<std::uint32_t>& ring = patch.vertices;
   const auto corner = [&](std::size_t k) { return mesh.vertices()[ring[k]]; };
@@ -56,26 +51,6 @@ Colour IndirectLight::at(std::size_t object, std::size_t face, const Vec3d& poin
     for (int c = 0; c < 3; ++c)
       out[c] += weights[v] / sum * per_vertex_(static_cast<Eigen::Index>(triangle[v]), c);
   return out;
-}
-
-std::optional<std::array<Colour, 2>> IndirectLight::bounds(std::size_t object, std::size_t face,
-                                                           const Vec3d& point) const {
-  const std::optional<std::uint32_t> found = patch_at(object, face, point);
-  if (!found) return std::nullopt;
-  const PatchMesh& mesh = solved_.mesh;
-  std::array<Colour, 2> range{};
-  for (int c = 0; c < 3; ++c) {
-    range[0][c] = std::numeric_limits<double>::infinity();
-    range[1][c] = -std::numeric_limits<double>::infinity();
-  }
-  for (std::uint32_t vertex : mesh.patches()[*found].vertices)
-    for (const auto& [neighbour, weight] : mesh.vertex_weights()[vertex])
-      for (int c = 0; c < 3; ++c) {
-        const double value = per_patch_(static_cast<Eigen::Index>(neighbour), c);
-        range[0][c] = std::min(range[0][c], value);
-        range[1][c] = std::max(range[1][c], value);
-      }
-  return range;
 }
 
 }  // namespace penumbra::basis

@@ -84,6 +84,9 @@ void write_values(const std::string& path, const Scene& scene, const render::Ren
 
 int run_render(RenderArguments& args) {
   finish_radiosity_options(args.radiosity);
+  if (args.isolux && args.false_colour != "none")
+    throw InputError("<command line>", "--isolux, --false-colour",
+                     "give one or the other: each draws its own legend");
   const double exposure_given = parse_exposure(args.exposure);
   std::vector<double> levels = parse_levels(args.levels);
   const Scene& scene = load_scene_until_exit(args.scene);

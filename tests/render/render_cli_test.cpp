@@ -150,6 +150,10 @@ BOOST_AUTO_TEST_CASE(bad_input_exits_2_and_writes_nothing) {
   BOOST_TEST(run_penumbra("render " + fixture("scenes/shadow-cube-sun.json").string() + " -o " +
                           image.string())
                  .status == 2);  // no camera
+  for (const char* options : {" --isolux --false-colour luminance", " --false-colour lux",
+                              " --indirect maybe", " --tone bright", " --patch-size 0"})
+    BOOST_TEST(run_penumbra("render " + scene + " -o " + image.string() + options).status == 2,
+               options);
   BOOST_TEST(!std::filesystem::exists(image));
 }
 

@@ -32,19 +32,10 @@ class IndirectLight {
   // rounding of) face `face` of object `object`; {0, 0, 0} when that face has no patch there.
   Colour at(std::size_t object, std::size_t face, const Vec3d& point) const;
 
-  // returns the patch at point of face (object, face) and its neighbours' value range (per
-  // channel: the least and greatest indirect illuminance of the patch and of every patch
-  // sharing a vertex with it): the interpolation bound, for tests and docs.
-  std::optional<std::array<Colour, 2>> bounds(std::size_t object, std::size_t face,
-                                              const Vec3d& point) const;
-
   const SceneRadiosity& solution() const { return solved_; }
   const Eigen::MatrixX3d& per_patch() const { return per_patch_; }  // n x 3, lux
 
  private:
-  std::optional<std::uint32_t> patch_at(std::size_t object, std::size_t face,
-                                        const Vec3d& point) const;
-
   SceneRadiosity solved_;
   Eigen::MatrixX3d per_patch_;
   Eigen::MatrixX3d per_vertex_;
