@@ -125,15 +125,17 @@ BOOST_AUTO_TEST_CASE(isolux_belts_paint_exactly_the_odd_bands_in_the_colour_of_t
 
 BOOST_AUTO_TEST_CASE(every_fixture_renders_to_its_reference_image) {
   // fixtures/images holds the images docs/render.md shows, looked at when they were made:
-  // any change to visibility, shadow boundaries, shading or tone mapping shows here.
+  // any change to visibility, shadow boundaries, shading or tone mapping shows here. Direct
+  // light only, as the paper's Fig. 11: the radiosity solve behind indirect light differs in
+  // its last bits between compilers (GCC and clang's sanitizer build), enough to move a byte.
   const auto dir = scratch_dir("render-cli-references");
   for (const char* name :
        {"render-interior", "render-outdoor", "render-room-point", "render-room-linear"})
     for (const bool isolux : {false, true}) {
       const std::string image = std::string(name) + (isolux ? "-isolux" : "") + ".png";
-      const auto result =
-          run_penumbra("render " + fixture(std::string("scenes/") + name + ".json").string() +
-                       " -o " + (dir / image).string() + (isolux ? " --isolux" : ""));
+      const auto result = run_penumbra(
+          "render " + fixture(std::string("scenes/") + name + ".json").string() + " -o " +
+          (dir / image).string() + " --indirect off" + (isolux ? " --isolux" : ""));
       BOOST_TEST_REQUIRE(result.status == 0, result.err);
       BOOST_TEST(read_text(dir / image) == read_text(fixture("images/" + image)), image);
     }
