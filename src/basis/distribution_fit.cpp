@@ -5,8 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "penumbra/base/gauss_legendre.h"
 #include "penumbra/base/numbers.h"
-#include "penumbra/basis/gauss_legendre.h"
 #include "penumbra/basis/spherical_harmonics.h"
 #include "penumbra/photometry/analytic_distribution.h"
 #include "penumbra/photometry/table_distribution.h"

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "penumbra/base/gauss_legendre.h"
 #include "penumbra/base/numbers.h"
-#include "penumbra/basis/gauss_legendre.h"
 #include "penumbra/basis/sigma_factors.h"
 
 namespace penumbra::basis {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "penumbra/base/gauss_legendre.h"
 #include "penumbra/base/numbers.h"
-#include "penumbra/basis/gauss_legendre.h"
 
 namespace penumbra::basis {
 namespace {}  // namespace

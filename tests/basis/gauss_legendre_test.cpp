@@ -1,12 +1,12 @@
 // The Gauss-Legendre rules: against Boost.Math's tabulated rule and by exactness.
 
-#include "penumbra/basis/gauss_legendre.h"
+#include "penumbra/base/gauss_legendre.h"
 
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/test/unit_test.hpp>
 #include <cmath>
 
-using namespace penumbra::basis;
+using namespace penumbra;
 
 BOOST_AUTO_TEST_SUITE(gauss_legendre_rule)
 

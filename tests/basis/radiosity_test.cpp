@@ -7,10 +7,10 @@
 #include <cmath>
 #include <random>
 
+#include "penumbra/base/gauss_legendre.h"
 #include "penumbra/base/numbers.h"
 #include "penumbra/basis/basis_luminances.h"
 #include "penumbra/basis/form_factors.h"
-#include "penumbra/basis/gauss_legendre.h"
 #include "penumbra/basis/patch_mesh.h"
 #include "penumbra/basis/radiosity.h"
 #include "penumbra/basis/scene_radiosity.h"

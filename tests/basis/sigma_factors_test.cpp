@@ -6,13 +6,14 @@
 #include <cmath>
 
 #include "exact_integrals.h"
+#include "penumbra/base/gauss_legendre.h"
 #include "penumbra/base/numbers.h"
-#include "penumbra/basis/gauss_legendre.h"
 #include "penumbra/basis/legendre_series.h"
 
 using penumbra::pi;
 
 namespace tt = boost::test_tools;
+using namespace penumbra;
 using namespace penumbra::basis;
 using penumbra::test::moment_of_legendre;
 

@@ -1,10 +1,11 @@
 #pragma once
 // Gauss-Legendre quadrature: the accurate integration behind the Legendre weights of
-// Dobashi 1995 eq. (3) and the sphere rules of the spherical-harmonic tests.
+// Dobashi 1995 eq. (3), the sphere rules of the spherical-harmonic tests and the areas of
+// curved umbrae (shadow/exact_umbra.h).
 
 #include <vector>
 
-namespace penumbra::basis {
+namespace penumbra {
 
 // A one-dimensional quadrature rule: sum_i weights[i] f(nodes[i]) approximates the
 // integral of f over the rule's interval.
@@ -23,4 +24,4 @@ QuadratureRule gauss_legendre(int points);
 // returns rule (on [-1, 1]) mapped affinely onto [a, b].
 QuadratureRule mapped(const QuadratureRule& rule, double a, double b);
 
-}  // namespace penumbra::basis
+}  // namespace penumbra

@@ -1,10 +1,10 @@
-#include "penumbra/basis/gauss_legendre.h"
+#include "penumbra/base/gauss_legendre.h"
 
 #include <cmath>
 #include <stdexcept>
 #include "penumbra/base/numbers.h"
 
-namespace penumbra::basis {
+namespace penumbra {
 namespace {
 
 struct LegendreValue {
@@ -66,4 +66,4 @@ QuadratureRule mapped(const QuadratureRule& rule, double a, double b) {
   return out;
 }
 
-}  // namespace penumbra::basis
+}  // namespace penumbra

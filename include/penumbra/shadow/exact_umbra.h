@@ -1,0 +1,78 @@
+#pragma once
+// The exact umbra of a linear source on one face, joint occlusion included (issue #17,
+// docs/linear-shadows.md "Joint umbrae"). A point P of the face is in the umbra when the
+// blocked parts of the source (one closed interval of the source's parameter per convex
+// occluder) together cover the whole visible source (Nishita 1985 section 4.1.2, the
+// source cut by the face's plane as in Fig. 7, S3). Where two occluders block the tube
+// together, the umbra ends where the gap between their intervals closes: the end of one
+// interval is fixed by an edge e of the first occluder, the start of the next by an edge f
+// of the second, and the lines through P that meet the source's line, e and f form a
+// regulus: the boundary is the conic in which that quadric meets the face's plane, with
+// rational coefficients. Every decision is exact: CGAL's algebraic kernel isolates the
+// conics' crossings, and every cell of the decomposition is labelled at a rational point.
+//
+// The set is the closure of the open set of covered points (regularized, as every region
+// of DESIGN.md): intervals that only touch still cover, as abutting shadows merge.
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "penumbra/geometry/convex_polyhedron.h"
+#include "penumbra/shadow/region.h"
+
+namespace penumbra {
+
+// One convex occluder of the face: the solid and its whole shadow (penumbra and umbra) on
+// the face, a convex ring in the face's frame (OccluderShadow::polygon).
+struct UmbraOccluder {
+  const ConvexPolyhedron* solid;
+  Ring2 shadow;
+};
+
+// A piece of the umbra's boundary: part of a line or a conic of the face's frame,
+// a s^2 + b s t + c t^2 + d s + e t + f = 0 in frame coordinates (s, t); a = b = c = 0 for
+// a segment. points runs along the piece with the umbra on its left, densified so that the
+// chords stay within the tolerance given to exact_umbra (world units) of the curve.
+struct UmbraArc {
+  std::array<Exact, 6> curve;
+  bool straight = true;
+  bool joint = false;  // the gap between two occluders' blocked intervals closes here
+  std::vector<std::array<double, 2>> points;
+};
+
+class ExactUmbra {
+ public:
+  struct Impl;
+  explicit ExactUmbra(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+
+  // returns true when p (frame coordinates) lies in the closed umbra. Exact.
+  bool contains(const Point2& p) const;
+  // the umbra's area in frame units (world area = area |u| |v|): the single umbrae's
+  // exactly, plus the joint part's by Gauss-Legendre quadrature of the exact cells' bounds
+  // (1e-13 relative per column).
+  double area() const;
+  // the boundary of the joint part, piece by piece (not chained into rings); the single
+  // umbrae's boundaries are the straight rings of FaceShadow::umbra.
+  const std::vector<UmbraArc>& boundary() const;
+  // true when some part of the umbra is covered by no single occluder alone.
+  bool joint() const;
+  // the number of cells of the decomposition (columns x cells), for benchmarks.
+  std::size_t cells() const;
+
+ private:
+  std::shared_ptr<const Impl> impl_;
+};
+
+// computes the exact umbra of the source q1q2 on face (the source cut by the face's plane,
+// Fig. 7 S3) under the convex occluders: single, the union of their single umbrae
+// (FaceShadow::umbra), and the joint part, which the sweep finds where two occluders'
+// whole shadows overlap (outside, one occluder at most hides anything). tolerance: the
+// densified boundary's chord error, in world units. Precondition: the visible part of the
+// source meets no occluder.
+ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
+                       const std::vector<UmbraOccluder>& occluders, const Region2& single,
+                       double tolerance = 1e-6);
+
+}  // namespace penumbra

@@ -1,0 +1,776 @@
+#include "penumbra/shadow/exact_umbra.h"
+
+// The sweep (docs/linear-shadows.md, "Joint umbrae"): in pencil coordinates (pencil.h) every
+// candidate boundary is a curve r = -num(s) / den(s) or a line of the pencil. The lines
+// where an occluder's blocked interval changes form (its whole shadow's edges, the planes
+// of its point shadows from each end of the source, its faces' planes, and the pencil
+// lines through its vertices) cut the face into slabs in which their order is fixed; at a
+// rational point of each piece between them the blocked intervals name the edges that fix
+// their ends, hence the conics (t_high of one occluder = t_low of another) that can bound
+// the umbra there. Their crossings, isolated exactly by CGAL's algebraic kernel, cut the
+// slab into columns in which no two curves cross, and each cell of a column (between two
+// consecutive curves) is labelled at a rational point by the exact union of the blocked
+// intervals.
+
+#include <CGAL/Algebraic_kernel_d_1.h>
+#include <CGAL/CORE_BigInt.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#include "blocked_interval.h"
+#include "pencil.h"
+#include "penumbra/base/gauss_legendre.h"
+#include "penumbra/shadow/linear_face_shadow.h"
+#include "penumbra/shadow/linear_volumes.h"
+
+namespace penumbra {
+namespace {
+
+using detail::Affine2;
+using detail::BlockedInterval;
+using detail::Pencil;
+using detail::PencilCurve;
+using detail::Poly;
+using detail::Quadratic2;
+using detail::RationalVector2;
+
+using AK = CGAL::Algebraic_kernel_d_1<CORE::BigInt>;
+using Algebraic = AK::Algebraic_real_1;
+
+const AK& algebraic_kernel() {
+  static const AK kernel;
+  return kernel;
+}
+
+// the GMP value of a rational, whichever of CGAL's GMP rationals Epeck uses.
+[[maybe_unused]] mpq_srcptr gmp(const CGAL::Gmpq& x) {
+  return x.mpq();
+}
+#ifdef CGAL_USE_GMPXX
+[[maybe_unused]] mpq_srcptr gmp(const mpq_class& x) {
+  return x.get_mpq_t();
+}
+#endif
+
+CORE::BigRat bound(const Rational& x) {
+  return CORE::BigRat(gmp(x));
+}
+
+Rational rational(const CORE::BigRat& x) {
+  return Rational(x.get_mp());
+}
+
+Algebraic algebraic(const Rational& x) {
+  return Algebraic(bound(x));
+}
+
+// the real roots of p strictly between low and high, increasing.
+std::vector<Algebraic> roots_between(const Poly& p, const Algebraic& low, const Algebraic& high) {
+  std::vector<Algebraic> result;
+  if (p.degree() < 1) return result;
+  // clear denominators: integer coefficients, the same roots.
+  mpz_t scale;
+  mpz_init_set_ui(scale, 1);
+  for (const Rational& c : p.c) mpz_lcm(scale, scale, mpq_denref(gmp(c)));
+  std::vector<CORE::BigInt> coefficients;
+  for (const Rational& c : p.c) {
+    mpz_t n;
+    mpz_init(n);
+    mpz_divexact(n, scale, mpq_denref(gmp(c)));
+    mpz_mul(n, n, mpq_numref(gmp(c)));
+    coefficients.emplace_back(n);
+    mpz_clear(n);
+  }
+  mpz_clear(scale);
+  const AK::Polynomial_1 polynomial(coefficients.begin(), coefficients.end());
+  std::vector<std::pair<Algebraic, AK::Multiplicity_type>> roots;
+  algebraic_kernel().solve_1_object()(polynomial, std::back_inserter(roots));
+  for (const auto& root : roots)
+    if (root.first > low && root.first < high) result.push_back(root.first);
+  return result;
+}
+
+// returns a rational strictly between low < high.
+Rational rational_between(const Algebraic& low, const Algebraic& high) {
+  return rational(algebraic_kernel().bound_between_1_object()(low, high));
+}
+
+double approximate(const Algebraic& x) {
+  return CGAL::to_double(x);
+}
+
+RationalPoint2 rational_point(const Point2& p) {
+  return CGAL::exact(p);
+}
+
+// the affine function g . P + h of the face's points, in frame coordinates.
+Affine2 on_face(const FaceFrame& frame, const RationalVector3& g, const Rational& h) {
+  const RationalVector3 u = CGAL::exact(frame.u()), v = CGAL::exact(frame.v());
+  const RationalPoint3 o = CGAL::exact(frame.origin());
+  return {g * u, g * v, g * (o - CGAL::ORIGIN) + h};
+}
+
+Affine2 on_face(const FaceFrame& frame, const RationalPlane3& plane) {
+  return on_face(frame, RationalVector3(plane.a(), plane.b(), plane.c()), plane.d());
+}
+
+// the line through a and b.
+Affine2 line_through(const RationalPoint2& a, const RationalPoint2& b) {
+  return {a.y() - b.y(), b.x() - a.x(), a.x() * b.y() - a.y() * b.x()};
+}
+
+// true when p lies in the closed convex counter-clockwise ring.
+bool in_ring(const std::vector<RationalPoint2>& ring, const RationalPoint2& p) {
+  const std::size_t n = ring.size();
+  for (std::size_t k = 0; k < n; ++k)
+    if (CGAL::orientation(ring[k], ring[(k + 1) % n], p) == CGAL::RIGHT_TURN) return false;
+  return n >= 3;
+}
+
+// A line of the sweep with the rings in which it matters (closed): a change of an
+// occluder's blocked interval happens inside that occluder's whole shadow.
+struct SweepLine {
+  Affine2 line;
+  std::vector<const std::vector<RationalPoint2>*> regions;
+};
+
+struct Curve {
+  PencilCurve f;
+  Quadratic2 q;
+  bool joint = false;
+};
+
+struct Column {
+  Algebraic low, high;
+  Rational sample;
+  std::vector<int> curves;   // increasing r at the sample, distinct
+  std::vector<char> labels;  // cell k lies below curves[k]; labels.back() above the last
+};
+
+struct Sector {
+  Pencil pencil;
+  std::vector<Column> columns;
+  std::vector<Rational> seams;  // the slab bounds (rational), increasing
+};
+
+// the value of a curve of a column at s: nullopt at a pole.
+std::optional<Rational> r_at(const Curve& curve, const Rational& s) {
+  const Rational den = curve.f.den(s);
+  if (CGAL::is_zero(den)) return std::nullopt;
+  return -curve.f.num(s) / den;
+}
+
+}  // namespace
+
+struct ExactUmbra::Impl {
+  bool whole = false;  // no part of the source is visible: the whole face
+  Region2 single;      // the union of the single occluders' umbrae
+  std::vector<RationalPoint2> face;
+  FaceFrame frame;
+  std::vector<Curve> curves;
+  std::vector<Sector> sectors;
+  std::optional<RationalPoint2> centre;  // x0 when finite
+  bool centre_label = false;
+  double area = 0;
+  std::vector<UmbraArc> boundary;
+  bool joint = false;
+  std::size_t cells = 0;
+
+  // the label of the cell of column at (s, r), s in the column's closed range: true when
+  // an umbra cell of the column holds or touches the point.
+  bool label_at(const Column& column, const Rational& s, const Rational& r) const {
+    std::size_t below = 0;
+    for (std::size_t k = 0; k < column.curves.size(); ++k) {
+      const auto rc = r_at(curves[column.curves[k]], s);
+      if (!rc) continue;  // at a pole the curve is far away
+      if (*rc == r) return column.labels[k] || column.labels[k + 1];
+      if (*rc < r) below = k + 1;
+    }
+    return column.labels[below];
+  }
+};
+
+namespace {
+
+class Sweep {
+ public:
+  Sweep(ExactUmbra::Impl& impl, const Face& face, const RationalPoint3& q1,
+        const RationalPoint3& q2, const std::vector<UmbraOccluder>& occluders)
+      : impl_(impl), face_(face), q1_(q1), q2_(q2) {
+    for (const UmbraOccluder& occluder : occluders) {
+      solids_.push_back(detail::rational_solid(*occluder.solid));
+      std::vector<RationalPoint2> ring;
+      for (const Point2& p : occluder.shadow) ring.push_back(rational_point(p));
+      shadows_.push_back(std::move(ring));
+    }
+    collect_lines(occluders);
+  }
+
+  void run(Sector& sector) {
+    const Pencil& pencil = sector.pencil;
+    std::vector<Rational> seams{pencil.s_low(), pencil.s_high()};
+    auto add_rays = [&](const Poly& rays) {
+      if (rays.degree() == 1) seams.push_back(-rays.c[0] / rays.c[1]);
+      // (degree 2: a degenerate conic's pair of pencil lines; none among straight lines)
+    };
+    std::vector<std::size_t> line_curves;  // indices into lines_ of lines met once per ray
+    std::vector<PencilCurve> line_traces;
+    for (std::size_t k = 0; k < lines_.size(); ++k) {
+      const detail::PencilTrace trace = pencil.trace(lines_[k].line.line());
+      add_rays(trace.rays);
+      if (!trace.curve) continue;
+      if (trace.curve->den.degree() == 1)
+        seams.push_back(-trace.curve->den.c[0] / trace.curve->den.c[1]);
+      line_curves.push_back(k);
+      line_traces.push_back(*trace.curve);
+    }
+    for (const Affine2& ray : rays_) add_rays(pencil.trace(ray.line()).rays);
+    for (const RationalPoint2& p : impl_.face)
+      if (const auto c = pencil.coordinates(p)) seams.push_back(c->first);
+    // Crossings of two lines inside the face and inside a region of each.
+    for (std::size_t i = 0; i < line_curves.size(); ++i)
+      for (std::size_t j = i + 1; j < line_curves.size(); ++j) {
+        const Affine2& a = lines_[line_curves[i]].line;
+        const Affine2& b = lines_[line_curves[j]].line;
+        const Rational det = a.d * b.e - a.e * b.d;
+        if (CGAL::is_zero(det)) continue;
+        const RationalPoint2 p((a.e * b.f - a.f * b.e) / det, (a.f * b.d - a.d * b.f) / det);
+        if (!relevant(lines_[line_curves[i]], p) || !relevant(lines_[line_curves[j]], p)) continue;
+        if (const auto c = pencil.coordinates(p)) seams.push_back(c->first);
+      }
+    std::sort(seams.begin(), seams.end());
+    seams.erase(std::unique(seams.begin(), seams.end()), seams.end());
+    seams.erase(std::remove_if(
+                    seams.begin(), seams.end(),
+                    [&](const Rational& s) { return s < pencil.s_low() || s > pencil.s_high(); }),
+                seams.end());
+    sector.seams = seams;
+
+    // Curves of the lines, registered once per sector.
+    std::vector<int> line_ids;
+    for (std::size_t k = 0; k < line_curves.size(); ++k) {
+      line_ids.push_back(static_cast<int>(impl_.curves.size()));
+      impl_.curves.push_back({line_traces[k], lines_[line_curves[k]].line.line(), false});
+    }
+    for (std::size_t k = 0; k + 1 < seams.size(); ++k)
+      slab(sector, seams[k], seams[k + 1], line_curves, line_ids);
+  }
+
+ private:
+  // true when p lies in two occluders' whole shadows (closed): only there can occluders
+  // hide the source together (the sweep's region W).
+  bool shared(const RationalPoint2& p) const {
+    int count = 0;
+    for (const auto& shadow : shadows_)
+      if (in_ring(shadow, p) && ++count == 2) return true;
+    return false;
+  }
+
+  bool relevant(const SweepLine& line, const RationalPoint2& p) const {
+    if (!in_ring(impl_.face, p) || !shared(p)) return false;
+    for (const auto* region : line.regions)
+      if (!region || in_ring(*region, p)) return true;
+    return false;
+  }
+
+  void add_line(const Affine2& line, const std::vector<RationalPoint2>* region) {
+    if (CGAL::is_zero(line.d) && CGAL::is_zero(line.e)) return;
+    // normalise: the first nonzero of (d, e) is 1, so equal lines compare equal.
+    const Rational k = CGAL::is_zero(line.d) ? line.e : line.d;
+    const Affine2 unit{line.d / k, line.e / k, line.f / k};
+    for (SweepLine& known : lines_)
+      if (known.line.d == unit.d && known.line.e == unit.e && known.line.f == unit.f) {
+        known.regions.push_back(region);
+        return;
+      }
+    lines_.push_back({unit, {region}});
+  }
+
+  void collect_lines(const std::vector<UmbraOccluder>& occluders) {
+    const FaceFrame& frame = face_.frame;
+    const std::size_t n = impl_.face.size();
+    for (std::size_t k = 0; k < n; ++k)
+      add_line(line_through(impl_.face[k], impl_.face[(k + 1) % n]), nullptr);
+    const Point3 q1 = from_exact<Point3>(q1_), q2 = from_exact<Point3>(q2_);
+    const RationalVector3 d = q2_ - q1_;
+    for (std::size_t o = 0; o < occluders.size(); ++o) {
+      const auto* region = &shadows_[o];
+      const std::size_t m = region->size();
+      for (std::size_t k = 0; k < m; ++k)
+        add_line(line_through((*region)[k], (*region)[(k + 1) % m]), region);
+      for (const Point3& end : {q1, q2})
+        for (const Plane3& plane : point_shadow_volume(*occluders[o].solid, end).planes)
+          add_line(on_face(frame, CGAL::exact(plane)), region);
+      for (const RationalPlane3& plane : solids_[o].planes) add_line(on_face(frame, plane), region);
+      // The pencil line through each vertex: where the slice of the solid by the planes
+      // through the source changes.
+      for (const RationalPoint3& v : solids_[o].vertices) {
+        const RationalVector3 g = CGAL::cross_product(d, v - q1_);
+        rays_.push_back(on_face(frame, g, -(g * (q1_ - CGAL::ORIGIN))));
+      }
+    }
+  }
+
+  RationalPoint3 world(const RationalPoint2& p) const { return face_.frame.to_world(p); }
+
+  // the occluders' blocked intervals at p; outside an occluder's whole shadow it hides
+  // nothing, without clipping.
+  std::vector<BlockedInterval> blocked(const RationalPoint2& p) const {
+    std::optional<RationalPoint3> x;
+    std::vector<BlockedInterval> result(solids_.size());
+    for (std::size_t k = 0; k < solids_.size(); ++k) {
+      if (!in_ring(shadows_[k], p)) continue;
+      if (!x) x = world(p);
+      result[k] = detail::blocked_interval(solids_[k], *x, q1_, q2_);
+    }
+    return result;
+  }
+
+  // the conic t_high(j) = t_low(k) of the edges f of occluder j and e of occluder k.
+  Quadratic2 gap_conic(std::size_t j, int f, std::size_t k, int e) const {
+    auto parameter = [&](std::size_t o, int edge) {
+      const auto& ends = solids_[o].edges[edge];
+      const detail::EdgeParameter t = detail::edge_parameter(
+          solids_[o].vertices[ends[0]], solids_[o].vertices[ends[1]], q1_, q2_);
+      return std::make_pair(on_face(face_.frame, t.gn, t.hn), on_face(face_.frame, t.gd, t.hd));
+    };
+    const auto [nf, df] = parameter(j, f);
+    const auto [ne, de] = parameter(k, e);
+    const Quadratic2 left = nf * de, right = ne * df;
+    return {left.a - right.a, left.b - right.b, left.c - right.c,
+            left.d - right.d, left.e - right.e, left.f - right.f};
+  }
+
+  struct Portion {
+    int bottom = -1, top = -1;  // curve ids (-1: r = 0 at a finite centre)
+    std::vector<int> conics;
+  };
+
+  void slab(Sector& sector, const Rational& sa, const Rational& sb,
+            const std::vector<std::size_t>& line_curves, const std::vector<int>& line_ids) {
+    const Pencil& pencil = sector.pencil;
+    const Rational middle = detail::simplest_between(sa, sb);
+    // The lines that matter on this slab, in increasing r.
+    std::vector<std::pair<Rational, int>> ordered;
+    for (std::size_t k = 0; k < line_curves.size(); ++k) {
+      const auto r = r_at(impl_.curves[line_ids[k]], middle);
+      if (!r || (pencil.finite() && !CGAL::is_positive(*r))) continue;
+      if (!relevant(lines_[line_curves[k]], pencil.point(middle, *r))) continue;
+      ordered.emplace_back(*r, line_ids[k]);
+    }
+    std::sort(ordered.begin(), ordered.end());
+    ordered.erase(std::unique(ordered.begin(), ordered.end(),
+                              [](const auto& a, const auto& b) { return a.first == b.first; }),
+                  ordered.end());
+    std::vector<int> straight;
+    for (const auto& entry : ordered) straight.push_back(entry.second);
+
+    // The conics of each piece between consecutive lines.
+    std::vector<Portion> portions;
+    std::vector<Poly> crossings;
+    for (std::size_t k = 0; k <= ordered.size(); ++k) {
+      if (k == ordered.size()) break;  // above the last line: outside the face
+      Rational r;
+      if (k == 0) {
+        if (!pencil.finite()) continue;
+        r = detail::simplest_between(0, ordered[0].first);
+      } else {
+        r = detail::simplest_between(ordered[k - 1].first, ordered[k].first);
+      }
+      const RationalPoint2 p = pencil.point(middle, r);
+      if (!in_ring(impl_.face, p) || !shared(p)) continue;
+      const std::vector<BlockedInterval> intervals = blocked(p);
+      Portion portion;
+      portion.bottom = k == 0 ? -1 : ordered[k - 1].second;
+      portion.top = ordered[k].second;
+      for (std::size_t j = 0; j < intervals.size(); ++j)
+        for (std::size_t i = 0; i < intervals.size(); ++i) {
+          if (i == j || intervals[j].kind != BlockedInterval::Kind::interval ||
+              intervals[i].kind != BlockedInterval::Kind::interval)
+            continue;
+          if (intervals[j].high_edge < 0 || intervals[i].low_edge < 0) continue;
+          const Quadratic2 q = gap_conic(j, intervals[j].high_edge, i, intervals[i].low_edge);
+          const detail::PencilTrace trace = pencil.trace(q);
+          if (!trace.rays.zero()) crossings.push_back(trace.rays);
+          if (!trace.curve) continue;
+          portion.conics.push_back(static_cast<int>(impl_.curves.size()));
+          impl_.curves.push_back({*trace.curve, q, true});
+        }
+      portions.push_back(std::move(portion));
+    }
+    // Where the conics cross each other, their piece's bounds, or leave through r = 0 or
+    // infinity.
+    for (const Portion& portion : portions)
+      for (std::size_t a = 0; a < portion.conics.size(); ++a) {
+        const PencilCurve& c = impl_.curves[portion.conics[a]].f;
+        crossings.push_back(c.den);
+        if (pencil.finite()) crossings.push_back(c.num);
+        for (int bound : {portion.bottom, portion.top}) {
+          if (bound < 0) continue;
+          const PencilCurve& l = impl_.curves[bound].f;
+          crossings.push_back(c.num * l.den - l.num * c.den);
+        }
+        for (std::size_t b = a + 1; b < portion.conics.size(); ++b) {
+          const PencilCurve& o = impl_.curves[portion.conics[b]].f;
+          crossings.push_back(c.num * o.den - o.num * c.den);
+        }
+      }
+    const Algebraic low = algebraic(sa), high = algebraic(sb);
+    std::vector<Algebraic> cuts{low, high};
+    for (const Poly& p : crossings)
+      for (const Algebraic& root : roots_between(p, low, high)) cuts.push_back(root);
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+
+    std::map<std::pair<int, int>, char> labels;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      Column column;
+      column.low = cuts[k];
+      column.high = cuts[k + 1];
+      column.sample = (cuts.size() == 2) ? middle : rational_between(cuts[k], cuts[k + 1]);
+      const Rational& s = column.sample;
+      std::vector<std::pair<Rational, int>> at;
+      for (int id : straight) at.emplace_back(*r_at(impl_.curves[id], s), id);
+      for (const Portion& portion : portions) {
+        const Rational bottom =
+            portion.bottom < 0 ? Rational(0) : *r_at(impl_.curves[portion.bottom], s);
+        const Rational top = *r_at(impl_.curves[portion.top], s);
+        for (int id : portion.conics) {
+          const auto r = r_at(impl_.curves[id], s);
+          if (r && *r > bottom && *r < top) at.emplace_back(*r, id);
+        }
+      }
+      std::sort(at.begin(), at.end());
+      at.erase(std::unique(at.begin(), at.end(),
+                           [](const auto& a, const auto& b) { return a.first == b.first; }),
+               at.end());
+      for (const auto& entry : at) column.curves.push_back(entry.second);
+      for (std::size_t cell = 0; cell <= at.size(); ++cell) {
+        // A cell between the same two curves in another column of the slab is the same
+        // open region (columns end where curves cross, not on lines of the pencil).
+        const std::pair<int, int> between{cell == 0 ? -1 : at[cell - 1].second,
+                                          cell == at.size() ? -1 : at[cell].second};
+        if (const auto known = labels.find(between); known != labels.end()) {
+          column.labels.push_back(known->second);
+          continue;
+        }
+        Rational r;
+        if (at.empty()) {
+          r = 1;
+        } else if (cell == 0) {
+          r = pencil.finite() ? detail::simplest_between(0, at[0].first)
+                              : Rational(at[0].first - 1);
+        } else if (cell == at.size()) {
+          r = at.back().first + 1;
+        } else {
+          r = detail::simplest_between(at[cell - 1].first, at[cell].first);
+        }
+        const RationalPoint2 p = pencil.point(s, r);
+        // The joint part: covered, by no single occluder alone.
+        bool label = false;
+        if (in_ring(impl_.face, p) && shared(p)) {
+          const std::vector<BlockedInterval> intervals = blocked(p);
+          label = detail::covers_source(intervals) &&
+                  std::none_of(intervals.begin(), intervals.end(),
+                               [](const auto& b) { return b.kind == BlockedInterval::Kind::full; });
+          impl_.joint = impl_.joint || label;
+        }
+        column.labels.push_back(label);
+        labels[between] = label;
+      }
+      impl_.cells += column.labels.size();
+      sector.columns.push_back(std::move(column));
+    }
+  }
+
+  ExactUmbra::Impl& impl_;
+  const Face& face_;
+  RationalPoint3 q1_, q2_;
+  std::vector<detail::RationalSolid> solids_;
+  std::vector<std::vector<RationalPoint2>> shadows_;
+  std::vector<SweepLine> lines_;
+  std::vector<Affine2> rays_;
+};
+
+// The world length of a frame displacement (the frame's axes are orthogonal).
+double world_length(const FaceFrame& frame, double du, double dv) {
+  return std::sqrt(du * du * CGAL::to_double(frame.squared_u()) +
+                   dv * dv * CGAL::to_double(frame.squared_v()));
+}
+
+// appends the points of curve over [s0, s1] (either order) to points, subdividing until
+// each chord's midpoint lies within tolerance of the curve.
+void densify(const Pencil& pencil, const Curve& curve, const FaceFrame& frame, double s0, double s1,
+             double tolerance, std::vector<std::array<double, 2>>& points, int depth = 0) {
+  const auto at = [&](double s) { return pencil.point(s, curve.f.r(s)); };
+  const std::array<double, 2> a = at(s0), b = at(s1), m = at((s0 + s1) / 2);
+  if (points.empty()) points.push_back(a);
+  const double deviation = world_length(frame, m[0] - (a[0] + b[0]) / 2, m[1] - (a[1] + b[1]) / 2);
+  if (curve.q.straight() || deviation <= tolerance || depth > 40) {
+    if (!curve.q.straight() && depth == 0) {
+      // a single chord may miss a bulge between the samples: split once at least.
+      densify(pencil, curve, frame, s0, (s0 + s1) / 2, tolerance, points, depth + 1);
+      densify(pencil, curve, frame, (s0 + s1) / 2, s1, tolerance, points, depth + 1);
+      return;
+    }
+    points.push_back(b);
+    return;
+  }
+  densify(pencil, curve, frame, s0, (s0 + s1) / 2, tolerance, points, depth + 1);
+  densify(pencil, curve, frame, (s0 + s1) / 2, s1, tolerance, points, depth + 1);
+}
+
+UmbraArc arc_of(const Curve& curve) {
+  UmbraArc arc;
+  const Quadratic2& q = curve.q;
+  arc.curve = {exact_number(q.a), exact_number(q.b), exact_number(q.c),
+               exact_number(q.d), exact_number(q.e), exact_number(q.f)};
+  arc.straight = q.straight();
+  arc.joint = curve.joint;
+  return arc;
+}
+
+// The boundary pieces of one sector: curve pieces inside columns, merged along a curve
+// across columns, and pieces of pencil lines at the seams between slabs.
+void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double tolerance,
+                    const Sector* next) {
+  const Pencil& pencil = sector.pencil;
+  struct Open {
+    double s0, s1;
+    bool above;
+  };
+  std::map<int, Open> open;  // curve id -> piece being extended
+  auto close = [&](int id) {
+    const Open& piece = open.at(id);
+    UmbraArc arc = arc_of(impl.curves[id]);
+    // Larger r lies on the side r_side() of increasing s; keep the umbra on the left.
+    const bool forward = piece.above == (pencil.r_side() > 0);
+    densify(pencil, impl.curves[id], impl.frame, forward ? piece.s0 : piece.s1,
+            forward ? piece.s1 : piece.s0, tolerance, arc.points);
+    impl.boundary.push_back(std::move(arc));
+    open.erase(id);
+  };
+  for (std::size_t c = 0; c < sector.columns.size(); ++c) {
+    const Column& column = sector.columns[c];
+    const double s0 = approximate(column.low), s1 = approximate(column.high);
+    std::map<int, bool> here;
+    for (std::size_t k = 0; k < column.curves.size(); ++k)
+      if (column.labels[k] != column.labels[k + 1]) here[column.curves[k]] = column.labels[k + 1];
+    for (auto it = open.begin(); it != open.end();) {
+      const auto found = here.find(it->first);
+      const bool continues =
+          found != here.end() && found->second == it->second.above && it->second.s1 == s0;
+      ++it;
+      if (!continues) close(std::prev(it)->first);
+    }
+    for (const auto& [id, above] : here) {
+      auto found = open.find(id);
+      if (found != open.end())
+        found->second.s1 = s1;
+      else
+        open[id] = {s0, s1, above};
+    }
+  }
+  while (!open.empty()) close(open.begin()->first);
+
+  // Pencil lines: at each seam, where the cells on its two sides differ.
+  // s_after: the seam's parameter in the sector of after (the next quadrant starts at 0).
+  auto seam = [&](const Column* before, const Column* after, const Rational& s,
+                  const Rational& s_after) {
+    std::vector<Rational> breaks;
+    for (const Column* column : {before, after}) {
+      if (!column) continue;
+      for (int id : column->curves)
+        if (const auto r = r_at(impl.curves[id], column == before ? s : s_after))
+          breaks.push_back(*r);
+    }
+    if (pencil.finite()) breaks.push_back(0);
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+      const Rational r = (breaks[k] + breaks[k + 1]) / 2;
+      const bool left = before && impl.label_at(*before, s, r);
+      const bool right = after && impl.label_at(*after, s_after, r);
+      if (left == right) continue;
+      UmbraArc arc;
+      // the pencil line through pencil.point(s, r): two of its points make the line.
+      const RationalPoint2 a = pencil.point(s, breaks[k]), b = pencil.point(s, breaks[k + 1]);
+      const Affine2 line = line_through(a, b);
+      arc.curve = {Exact(0),
+                   Exact(0),
+                   Exact(0),
+                   exact_number(line.d),
+                   exact_number(line.e),
+                   exact_number(line.f)};
+      // The larger-s side is left of increasing r when r_side() < 0.
+      const bool forward = right == (pencil.r_side() < 0);
+      const std::array<double, 2> pa = {CGAL::to_double(a.x()), CGAL::to_double(a.y())};
+      const std::array<double, 2> pb = {CGAL::to_double(b.x()), CGAL::to_double(b.y())};
+      arc.points = forward ? std::vector<std::array<double, 2>>{pa, pb}
+                           : std::vector<std::array<double, 2>>{pb, pa};
+      impl.boundary.push_back(std::move(arc));
+    }
+  };
+  const auto& columns = sector.columns;
+  const Column* first = columns.empty() ? nullptr : &columns.front();
+  const Column* last = columns.empty() ? nullptr : &columns.back();
+  if (!next) seam(nullptr, first, pencil.s_low(), pencil.s_low());
+  std::size_t c = 0;
+  for (std::size_t k = 1; k + 1 < sector.seams.size(); ++k) {
+    const Algebraic at = algebraic(sector.seams[k]);
+    while (c + 1 < columns.size() && columns[c].high < at) ++c;
+    seam(&columns[c], &columns[c + 1], sector.seams[k], sector.seams[k]);
+  }
+  if (next) {
+    const Column* following = next->columns.empty() ? nullptr : &next->columns.front();
+    seam(last, following, pencil.s_high(), next->pencil.s_low());
+  } else {
+    seam(last, nullptr, pencil.s_high(), pencil.s_high());
+  }
+}
+
+// the umbra's area in one sector: per column, the integral over s of the cells' extent
+// (adaptive Gauss-Legendre; scale: the face's area, for the absolute tolerance).
+double sector_area(const ExactUmbra::Impl& impl, const Sector& sector, double scale) {
+  const Pencil& pencil = sector.pencil;
+  const QuadratureRule rule = gauss_legendre(12);
+  double total = 0;
+  for (const Column& column : sector.columns) {
+    if (std::none_of(column.labels.begin(), column.labels.end(), [](char l) { return l; }))
+      continue;
+    const auto extent = [&](double s) {
+      double sum = 0;
+      auto f = [&](double r) { return pencil.finite() ? r * r / 2 : r; };
+      for (std::size_t k = 0; k < column.labels.size(); ++k) {
+        if (!column.labels[k]) continue;
+        const double bottom = k == 0 ? 0 : impl.curves[column.curves[k - 1]].f.r(s);
+        const double top = impl.curves[column.curves[k]].f.r(s);
+        sum += f(top) - f(bottom);
+      }
+      return sum;
+    };
+    const auto integrate = [&](double a, double b) {
+      double sum = 0;
+      const QuadratureRule on = mapped(rule, a, b);
+      for (std::size_t i = 0; i < on.nodes.size(); ++i) sum += on.weights[i] * extent(on.nodes[i]);
+      return sum;
+    };
+    // Adaptive: halve until the two halves agree with the whole.
+    std::function<double(double, double, double, int)> adapt = [&](double a, double b, double whole,
+                                                                   int depth) {
+      const double m = (a + b) / 2, left = integrate(a, m), right = integrate(m, b);
+      const double sum = left + right;
+      if (depth >= 24 || std::abs(sum - whole) <= 1e-13 * std::abs(sum) + 1e-16 * scale) return sum;
+      return adapt(a, m, left, depth + 1) + adapt(m, b, right, depth + 1);
+    };
+    const double a = approximate(column.low), b = approximate(column.high);
+    total += adapt(a, b, integrate(a, b), 0);
+  }
+  return total * pencil.jacobian();
+}
+
+}  // namespace
+
+bool ExactUmbra::contains(const Point2& point) const {
+  const Impl& impl = *impl_;
+  const RationalPoint2 p = rational_point(point);
+  if (!in_ring(impl.face, p)) return false;
+  if (impl.whole) return true;
+  for (const Polygon2& polygon : impl.single.polygons) {
+    if (CGAL::bounded_side_2(polygon.outer.begin(), polygon.outer.end(), point) ==
+        CGAL::ON_UNBOUNDED_SIDE)
+      continue;
+    if (std::none_of(polygon.holes.begin(), polygon.holes.end(), [&](const Ring2& hole) {
+          return CGAL::bounded_side_2(hole.begin(), hole.end(), point) == CGAL::ON_BOUNDED_SIDE;
+        }))
+      return true;
+  }
+  if (impl.centre && p == *impl.centre) return impl.centre_label;
+  for (const Sector& sector : impl.sectors) {
+    const auto c = sector.pencil.coordinates(p);
+    if (!c || c->first < sector.pencil.s_low() || c->first > sector.pencil.s_high()) continue;
+    const Algebraic s = algebraic(c->first);
+    for (const Column& column : sector.columns)
+      if (column.low <= s && s <= column.high && impl.label_at(column, c->first, c->second))
+        return true;
+  }
+  return false;
+}
+
+double ExactUmbra::area() const {
+  return impl_->area;
+}
+
+const std::vector<UmbraArc>& ExactUmbra::boundary() const {
+  return impl_->boundary;
+}
+
+bool ExactUmbra::joint() const {
+  return impl_->joint;
+}
+
+std::size_t ExactUmbra::cells() const {
+  return impl_->cells;
+}
+
+ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
+                       const std::vector<UmbraOccluder>& occluders, const Region2& single,
+                       double tolerance) {
+  auto impl = std::make_shared<ExactUmbra::Impl>();
+  impl->single = single;
+  impl->area = CGAL::to_double(single.area);
+  for (const Point2& p : face.ring) impl->face.push_back(rational_point(p));
+  impl->frame = face.frame;
+  const auto source = visible_source(face, q1, q2);
+  if (!source) {
+    impl->whole = true;
+    impl->area = CGAL::to_double(face.area);
+    return ExactUmbra(std::move(impl));
+  }
+  const RationalPoint3 a = CGAL::exact(source->q1), b = CGAL::exact(source->q2);
+  const RationalPlane3 plane = CGAL::exact(face.plane);
+  const auto value = [&](const RationalPoint3& p) -> Rational {
+    return plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d();
+  };
+  const Rational f1 = value(a), f2 = value(b);
+  if (f1 != f2) {
+    // The source's line meets the face's plane at x0: four quadrants of directions.
+    impl->centre = face.frame.to_frame(a + (f1 / (f1 - f2)) * (b - a));
+    const RationalVector2 axes[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    for (int k = 0; k < 4; ++k)
+      impl->sectors.push_back({Pencil::cone(*impl->centre, axes[k], axes[(k + 1) % 4]), {}, {}});
+  } else {
+    // Parallel to the face: lines along the source's direction, across the face.
+    const RationalVector3 d = b - a;
+    const RationalVector3 u = CGAL::exact(face.frame.u()), v = CGAL::exact(face.frame.v());
+    const RationalVector2 delta((d * u) / (u * u), (d * v) / (v * v));
+    const Pencil probe = Pencil::parallel(delta, 0, 0);
+    std::optional<Rational> low, high;
+    for (const RationalPoint2& p : impl->face) {
+      const Rational s = probe.coordinates(p)->first;
+      if (!low || s < *low) low = s;
+      if (!high || s > *high) high = s;
+    }
+    impl->sectors.push_back({Pencil::parallel(delta, *low, *high), {}, {}});
+  }
+  Sweep sweep(*impl, face, a, b, occluders);
+  for (Sector& sector : impl->sectors) sweep.run(sector);
+  if (impl->centre && in_ring(impl->face, *impl->centre)) {
+    for (const Sector& sector : impl->sectors)
+      for (const Column& column : sector.columns) impl->centre_label |= column.labels.front() != 0;
+  }
+  const std::size_t n = impl->sectors.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Sector* next = n == 4 ? &impl->sectors[(k + 1) % n] : nullptr;
+    trace_boundary(*impl, impl->sectors[k], tolerance, next);
+    impl->area += sector_area(*impl, impl->sectors[k], CGAL::to_double(face.area));
+  }
+  return ExactUmbra(std::move(impl));
+}
+
+}  // namespace penumbra
