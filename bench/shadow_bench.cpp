@@ -11,6 +11,7 @@
 
 #include "city_scene.h"
 #include "penumbra/scene/load_scene.h"
+#include "penumbra/shadow/exact_umbra.h"
 #include "penumbra/shadow/shadow_map.h"
 
 namespace {
@@ -63,6 +64,46 @@ void BM_ShadowsTubeY(benchmark::State& state) {
   shadows_of_city(state, "tube_y");
 }
 
+// The exact joint umbrae of a tube (issue #17): the single-occluder shadows of every face,
+// then exact_umbra on each face whose occluders' shadows overlap. The time against
+// BM_ShadowsTube*'s is the cost of the joint umbrae; counters: faces with overlapping
+// shadows, faces with a joint part, cells of the sweeps.
+void joint_umbrae_of_city(benchmark::State& state, const std::string& light) {
+  const Scene& scene = scene_of(static_cast<int>(state.range(0)));
+  ShadowOptions options;
+  options.light = light;
+  std::size_t overlapping = 0, joint = 0, cells = 0;
+  for (auto _ : state) {
+    const ShadowResult result = compute_shadows(scene, options);
+    const auto& tube = std::get<LinearLight>(scene.lights[result.lights.front().light].source);
+    const Point3 start = to_exact(tube.start), end = to_exact(tube.end);
+    overlapping = joint = cells = 0;
+    for (std::size_t r = 0; r < result.receivers.size(); ++r) {
+      const FaceShadow& shadow = result.lights.front().faces[r];
+      if (!shadow.joint_occlusion) continue;
+      ++overlapping;
+      std::vector<UmbraOccluder> occluders;
+      for (const OccluderShadow& o : shadow.occluders)
+        occluders.push_back({&scene.objects[o.occluder].solid, o.polygon});
+      const Receiver& receiver = result.receivers[r];
+      const Face& face = scene.objects[receiver.object].solid.faces()[receiver.face];
+      const ExactUmbra umbra = exact_umbra(face, start, end, occluders, shadow.umbra);
+      joint += umbra.joint();
+      cells += umbra.cells();
+    }
+  }
+  state.counters["overlapping_faces"] = static_cast<double>(overlapping);
+  state.counters["joint_faces"] = static_cast<double>(joint);
+  state.counters["cells"] = static_cast<double>(cells);
+}
+
+void BM_JointUmbraeTubeX(benchmark::State& state) {
+  joint_umbrae_of_city(state, "tube_x");
+}
+void BM_JointUmbraeTubeY(benchmark::State& state) {
+  joint_umbrae_of_city(state, "tube_y");
+}
+
 }  // namespace
 
 // the city sizes of the issue, one timed run each
@@ -79,3 +120,5 @@ BENCHMARK(BM_ShadowsLamp)->Apply(city_sizes);
 BENCHMARK(BM_ShadowsSun)->Apply(city_sizes);
 BENCHMARK(BM_ShadowsTubeX)->Apply(city_sizes);
 BENCHMARK(BM_ShadowsTubeY)->Apply(city_sizes);
+BENCHMARK(BM_JointUmbraeTubeX)->Apply(city_sizes);
+BENCHMARK(BM_JointUmbraeTubeY)->Apply(city_sizes);

@@ -262,13 +262,22 @@ class Sweep {
   }
 
  private:
-  // true when p lies in two occluders' whole shadows (closed): only there can occluders
-  // hide the source together (the sweep's region W).
+  // true when p lies in two occluders' whole shadows and both ends of the source are hidden
+  // from it, each by some occluder (closed sets): only there can occluders hide the whole
+  // source together (the sweep's region W). Each set is bounded by lines of the sweep.
   bool shared(const RationalPoint2& p) const {
     int count = 0;
     for (const auto& shadow : shadows_)
-      if (in_ring(shadow, p) && ++count == 2) return true;
-    return false;
+      if (in_ring(shadow, p)) ++count;
+    if (count < 2) return false;
+    for (const auto& hidden : end_shadows_)
+      if (std::none_of(hidden.begin(), hidden.end(), [&](const std::vector<Affine2>& volume) {
+            return !volume.empty() &&
+                   std::all_of(volume.begin(), volume.end(),
+                               [&](const Affine2& f) { return !CGAL::is_positive(f(p)); });
+          }))
+        return false;
+    return true;
   }
 
   bool relevant(const SweepLine& line, const RationalPoint2& p) const {
@@ -303,9 +312,14 @@ class Sweep {
       const std::size_t m = region->size();
       for (std::size_t k = 0; k < m; ++k)
         add_line(line_through((*region)[k], (*region)[(k + 1) % m]), region);
-      for (const Point3& end : {q1, q2})
-        for (const Plane3& plane : point_shadow_volume(*occluders[o].solid, end).planes)
-          add_line(on_face(frame, CGAL::exact(plane)), region);
+      for (int end = 0; end < 2; ++end) {
+        std::vector<Affine2> volume;
+        for (const Plane3& plane : point_shadow_volume(*occluders[o].solid, end ? q2 : q1).planes) {
+          volume.push_back(on_face(frame, CGAL::exact(plane)));
+          add_line(volume.back(), region);
+        }
+        end_shadows_[end].push_back(std::move(volume));
+      }
       for (const RationalPlane3& plane : solids_[o].planes) add_line(on_face(frame, plane), region);
       // The pencil line through each vertex: where the slice of the solid by the planes
       // through the source changes.
@@ -495,6 +509,9 @@ class Sweep {
   std::vector<std::vector<RationalPoint2>> shadows_;
   std::vector<SweepLine> lines_;
   std::vector<Affine2> rays_;
+  // per end of the source, per occluder: its point shadow volume's planes on the face (the
+  // points hiding that end are those where every one is <= 0; none: it hides nothing).
+  std::array<std::vector<std::vector<Affine2>>, 2> end_shadows_;
 };
 
 // The world length of a frame displacement (the frame's axes are orthogonal).
