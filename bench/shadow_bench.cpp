@@ -84,10 +84,10 @@ void joint_umbrae_of_city(benchmark::State& state, const std::string& light) {
       ++overlapping;
       std::vector<UmbraOccluder> occluders;
       for (const OccluderShadow& o : shadow.occluders)
-        occluders.push_back({&scene.objects[o.occluder].solid, o.polygon});
+        occluders.push_back({&scene.objects[o.occluder].solid, o.polygon, o.umbra});
       const Receiver& receiver = result.receivers[r];
       const Face& face = scene.objects[receiver.object].solid.faces()[receiver.face];
-      const ExactUmbra umbra = exact_umbra(face, start, end, occluders, shadow.umbra);
+      const ExactUmbra umbra = exact_umbra(face, start, end, occluders);
       joint += umbra.joint();
       cells += umbra.cells();
     }

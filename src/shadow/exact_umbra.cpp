@@ -132,12 +132,20 @@ bool in_ring(const std::vector<RationalPoint2>& ring, const RationalPoint2& p) {
   return n >= 3;
 }
 
-// A line of the sweep with the rings in which it matters (closed): a change of an
-// occluder's blocked interval happens inside that occluder's whole shadow.
+// Where a line of the sweep matters (closed sets): in ring (anywhere in the face when
+// null), and also in the region W of joint occlusion when in_w.
+struct LineRole {
+  const std::vector<RationalPoint2>* ring;
+  bool in_w;
+};
+
 struct SweepLine {
   Affine2 line;
-  std::vector<const std::vector<RationalPoint2>*> regions;
+  std::vector<LineRole> roles;
 };
+
+// What a cell of the sweep is: outside every shadow, penumbra, or umbra.
+enum Label : char { kLit = 0, kPenumbra = 1, kUmbra = 2 };
 
 struct Curve {
   PencilCurve f;
@@ -169,29 +177,29 @@ std::optional<Rational> r_at(const Curve& curve, const Rational& s) {
 
 struct ExactUmbra::Impl {
   bool whole = false;  // no part of the source is visible: the whole face
-  Region2 single;      // the union of the single occluders' umbrae
   std::vector<RationalPoint2> face;
   FaceFrame frame;
   std::vector<Curve> curves;
   std::vector<Sector> sectors;
   std::optional<RationalPoint2> centre;  // x0 when finite
   bool centre_label = false;
-  double area = 0;
-  std::vector<UmbraArc> boundary;
+  double area = 0, penumbra_area = 0;
+  std::vector<UmbraArc> boundary, penumbra_boundary;
   bool joint = false;
   std::size_t cells = 0;
 
   // the label of the cell of column at (s, r), s in the column's closed range: true when
   // an umbra cell of the column holds or touches the point.
-  bool label_at(const Column& column, const Rational& s, const Rational& r) const {
+  bool label_at(const Column& column, const Rational& s, const Rational& r,
+                char kind = kUmbra) const {
     std::size_t below = 0;
     for (std::size_t k = 0; k < column.curves.size(); ++k) {
       const auto rc = r_at(curves[column.curves[k]], s);
       if (!rc) continue;  // at a pole the curve is far away
-      if (*rc == r) return column.labels[k] || column.labels[k + 1];
+      if (*rc == r) return column.labels[k] == kind || column.labels[k + 1] == kind;
       if (*rc < r) below = k + 1;
     }
-    return column.labels[below];
+    return column.labels[below] == kind;
   }
 };
 
@@ -207,6 +215,10 @@ class Sweep {
       std::vector<RationalPoint2> ring;
       for (const Point2& p : occluder.shadow) ring.push_back(rational_point(p));
       shadows_.push_back(std::move(ring));
+      std::vector<RationalPoint2> umbra;
+      if (occluder.umbra)
+        for (const Point2& p : *occluder.umbra) umbra.push_back(rational_point(p));
+      umbrae_.push_back(std::move(umbra));
     }
     collect_lines(occluders);
   }
@@ -281,46 +293,56 @@ class Sweep {
   }
 
   bool relevant(const SweepLine& line, const RationalPoint2& p) const {
-    if (!in_ring(impl_.face, p) || !shared(p)) return false;
-    for (const auto* region : line.regions)
-      if (!region || in_ring(*region, p)) return true;
+    if (!in_ring(impl_.face, p)) return false;
+    std::optional<bool> in_w;
+    for (const LineRole& role : line.roles) {
+      if (role.ring && !in_ring(*role.ring, p)) continue;
+      if (!role.in_w) return true;
+      if (!in_w) in_w = shared(p);
+      if (*in_w) return true;
+    }
     return false;
   }
 
-  void add_line(const Affine2& line, const std::vector<RationalPoint2>* region) {
+  void add_line(const Affine2& line, const std::vector<RationalPoint2>* ring, bool in_w) {
     if (CGAL::is_zero(line.d) && CGAL::is_zero(line.e)) return;
     // normalise: the first nonzero of (d, e) is 1, so equal lines compare equal.
     const Rational k = CGAL::is_zero(line.d) ? line.e : line.d;
     const Affine2 unit{line.d / k, line.e / k, line.f / k};
     for (SweepLine& known : lines_)
       if (known.line.d == unit.d && known.line.e == unit.e && known.line.f == unit.f) {
-        known.regions.push_back(region);
+        known.roles.push_back({ring, in_w});
         return;
       }
-    lines_.push_back({unit, {region}});
+    lines_.push_back({unit, {{ring, in_w}}});
   }
 
   void collect_lines(const std::vector<UmbraOccluder>& occluders) {
     const FaceFrame& frame = face_.frame;
     const std::size_t n = impl_.face.size();
     for (std::size_t k = 0; k < n; ++k)
-      add_line(line_through(impl_.face[k], impl_.face[(k + 1) % n]), nullptr);
+      add_line(line_through(impl_.face[k], impl_.face[(k + 1) % n]), nullptr, false);
     const Point3 q1 = from_exact<Point3>(q1_), q2 = from_exact<Point3>(q2_);
     const RationalVector3 d = q2_ - q1_;
     for (std::size_t o = 0; o < occluders.size(); ++o) {
       const auto* region = &shadows_[o];
       const std::size_t m = region->size();
       for (std::size_t k = 0; k < m; ++k)
-        add_line(line_through((*region)[k], (*region)[(k + 1) % m]), region);
+        add_line(line_through((*region)[k], (*region)[(k + 1) % m]), region, false);
+      const auto* umbra = &umbrae_[o];
+      const std::size_t u = umbra->size();
+      for (std::size_t k = 0; k < u; ++k)
+        add_line(line_through((*umbra)[k], (*umbra)[(k + 1) % u]), umbra, false);
       for (int end = 0; end < 2; ++end) {
         std::vector<Affine2> volume;
         for (const Plane3& plane : point_shadow_volume(*occluders[o].solid, end ? q2 : q1).planes) {
           volume.push_back(on_face(frame, CGAL::exact(plane)));
-          add_line(volume.back(), region);
+          add_line(volume.back(), region, true);
         }
         end_shadows_[end].push_back(std::move(volume));
       }
-      for (const RationalPlane3& plane : solids_[o].planes) add_line(on_face(frame, plane), region);
+      for (const RationalPlane3& plane : solids_[o].planes)
+        add_line(on_face(frame, plane), region, true);
       // The pencil line through each vertex: where the slice of the solid by the planes
       // through the source changes.
       for (const RationalPoint3& v : solids_[o].vertices) {
@@ -331,6 +353,22 @@ class Sweep {
   }
 
   RationalPoint3 world(const RationalPoint2& p) const { return face_.frame.to_world(p); }
+
+  // the label of a point inside a cell (off every curve of the sweep): outside the shadows,
+  // in a single umbra (the straight rings), or, where occluders may hide the source
+  // together, covered by the exact union of the blocked intervals.
+  Label label_of(const RationalPoint2& p) {
+    if (!in_ring(impl_.face, p)) return kLit;
+    if (std::none_of(shadows_.begin(), shadows_.end(),
+                     [&](const auto& shadow) { return in_ring(shadow, p); }))
+      return kLit;
+    if (std::any_of(umbrae_.begin(), umbrae_.end(),
+                    [&](const auto& umbra) { return in_ring(umbra, p); }))
+      return kUmbra;
+    if (!shared(p) || !detail::covers_source(blocked(p))) return kPenumbra;
+    impl_.joint = true;
+    return kUmbra;
+  }
 
   // the occluders' blocked intervals at p; outside an occluder's whole shadow it hides
   // nothing, without clipping.
@@ -441,7 +479,7 @@ class Sweep {
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
 
-    std::map<std::pair<int, int>, char> labels;
+    std::map<std::pair<int, int>, Label> labels;
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
       Column column;
       column.low = cuts[k];
@@ -485,15 +523,7 @@ class Sweep {
           r = detail::simplest_between(at[cell - 1].first, at[cell].first);
         }
         const RationalPoint2 p = pencil.point(s, r);
-        // The joint part: covered, by no single occluder alone.
-        bool label = false;
-        if (in_ring(impl_.face, p) && shared(p)) {
-          const std::vector<BlockedInterval> intervals = blocked(p);
-          label = detail::covers_source(intervals) &&
-                  std::none_of(intervals.begin(), intervals.end(),
-                               [](const auto& b) { return b.kind == BlockedInterval::Kind::full; });
-          impl_.joint = impl_.joint || label;
-        }
+        const Label label = label_of(p);
         column.labels.push_back(label);
         labels[between] = label;
       }
@@ -507,6 +537,7 @@ class Sweep {
   RationalPoint3 q1_, q2_;
   std::vector<detail::RationalSolid> solids_;
   std::vector<std::vector<RationalPoint2>> shadows_;
+  std::vector<std::vector<RationalPoint2>> umbrae_;  // empty: no single umbra
   std::vector<SweepLine> lines_;
   std::vector<Affine2> rays_;
   // per end of the source, per occluder: its point shadow volume's planes on the face (the
@@ -555,7 +586,7 @@ UmbraArc arc_of(const Curve& curve) {
 // The boundary pieces of one sector: curve pieces inside columns, merged along a curve
 // across columns, and pieces of pencil lines at the seams between slabs.
 void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double tolerance,
-                    const Sector* next) {
+                    const Sector* next, char kind, std::vector<UmbraArc>& boundary) {
   const Pencil& pencil = sector.pencil;
   struct Open {
     double s0, s1;
@@ -569,7 +600,7 @@ void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double toleran
     const bool forward = piece.above == (pencil.r_side() > 0);
     densify(pencil, impl.curves[id], impl.frame, forward ? piece.s0 : piece.s1,
             forward ? piece.s1 : piece.s0, tolerance, arc.points);
-    impl.boundary.push_back(std::move(arc));
+    boundary.push_back(std::move(arc));
     open.erase(id);
   };
   for (std::size_t c = 0; c < sector.columns.size(); ++c) {
@@ -577,7 +608,8 @@ void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double toleran
     const double s0 = approximate(column.low), s1 = approximate(column.high);
     std::map<int, bool> here;
     for (std::size_t k = 0; k < column.curves.size(); ++k)
-      if (column.labels[k] != column.labels[k + 1]) here[column.curves[k]] = column.labels[k + 1];
+      if ((column.labels[k] == kind) != (column.labels[k + 1] == kind))
+        here[column.curves[k]] = column.labels[k + 1] == kind;
     for (auto it = open.begin(); it != open.end();) {
       const auto found = here.find(it->first);
       const bool continues =
@@ -611,8 +643,8 @@ void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double toleran
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
     for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
       const Rational r = (breaks[k] + breaks[k + 1]) / 2;
-      const bool left = before && impl.label_at(*before, s, r);
-      const bool right = after && impl.label_at(*after, s_after, r);
+      const bool left = before && impl.label_at(*before, s, r, kind);
+      const bool right = after && impl.label_at(*after, s_after, r, kind);
       if (left == right) continue;
       UmbraArc arc;
       // the pencil line through pencil.point(s, r): two of its points make the line.
@@ -630,7 +662,7 @@ void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double toleran
       const std::array<double, 2> pb = {CGAL::to_double(b.x()), CGAL::to_double(b.y())};
       arc.points = forward ? std::vector<std::array<double, 2>>{pa, pb}
                            : std::vector<std::array<double, 2>>{pb, pa};
-      impl.boundary.push_back(std::move(arc));
+      boundary.push_back(std::move(arc));
     }
   };
   const auto& columns = sector.columns;
@@ -653,18 +685,18 @@ void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double toleran
 
 // the umbra's area in one sector: per column, the integral over s of the cells' extent
 // (adaptive Gauss-Legendre; scale: the face's area, for the absolute tolerance).
-double sector_area(const ExactUmbra::Impl& impl, const Sector& sector, double scale) {
+double sector_area(const ExactUmbra::Impl& impl, const Sector& sector, double scale, char kind) {
   const Pencil& pencil = sector.pencil;
   const QuadratureRule rule = gauss_legendre(12);
   double total = 0;
   for (const Column& column : sector.columns) {
-    if (std::none_of(column.labels.begin(), column.labels.end(), [](char l) { return l; }))
+    if (std::none_of(column.labels.begin(), column.labels.end(), [&](char l) { return l == kind; }))
       continue;
     const auto extent = [&](double s) {
       double sum = 0;
       auto f = [&](double r) { return pencil.finite() ? r * r / 2 : r; };
       for (std::size_t k = 0; k < column.labels.size(); ++k) {
-        if (!column.labels[k]) continue;
+        if (column.labels[k] != kind) continue;
         const double bottom = k == 0 ? 0 : impl.curves[column.curves[k - 1]].f.r(s);
         const double top = impl.curves[column.curves[k]].f.r(s);
         sum += f(top) - f(bottom);
@@ -693,30 +725,33 @@ double sector_area(const ExactUmbra::Impl& impl, const Sector& sector, double sc
 
 }  // namespace
 
-bool ExactUmbra::contains(const Point2& point) const {
-  const Impl& impl = *impl_;
+namespace {
+
+// true when p lies in the closure of the cells of the kind.
+bool in_cells(const ExactUmbra::Impl& impl, const Point2& point, char kind) {
   const RationalPoint2 p = rational_point(point);
   if (!in_ring(impl.face, p)) return false;
-  if (impl.whole) return true;
-  for (const Polygon2& polygon : impl.single.polygons) {
-    if (CGAL::bounded_side_2(polygon.outer.begin(), polygon.outer.end(), point) ==
-        CGAL::ON_UNBOUNDED_SIDE)
-      continue;
-    if (std::none_of(polygon.holes.begin(), polygon.holes.end(), [&](const Ring2& hole) {
-          return CGAL::bounded_side_2(hole.begin(), hole.end(), point) == CGAL::ON_BOUNDED_SIDE;
-        }))
-      return true;
-  }
-  if (impl.centre && p == *impl.centre) return impl.centre_label;
+  if (impl.whole) return kind == kUmbra;
+  if (impl.centre && p == *impl.centre) return kind == kUmbra && impl.centre_label;
   for (const Sector& sector : impl.sectors) {
     const auto c = sector.pencil.coordinates(p);
     if (!c || c->first < sector.pencil.s_low() || c->first > sector.pencil.s_high()) continue;
     const Algebraic s = algebraic(c->first);
     for (const Column& column : sector.columns)
-      if (column.low <= s && s <= column.high && impl.label_at(column, c->first, c->second))
+      if (column.low <= s && s <= column.high && impl.label_at(column, c->first, c->second, kind))
         return true;
   }
   return false;
+}
+
+}  // namespace
+
+bool ExactUmbra::contains(const Point2& point) const {
+  return in_cells(*impl_, point, kUmbra);
+}
+
+bool ExactUmbra::in_penumbra(const Point2& point) const {
+  return in_cells(*impl_, point, kPenumbra);
 }
 
 double ExactUmbra::area() const {
@@ -725,6 +760,14 @@ double ExactUmbra::area() const {
 
 const std::vector<UmbraArc>& ExactUmbra::boundary() const {
   return impl_->boundary;
+}
+
+double ExactUmbra::penumbra_area() const {
+  return impl_->penumbra_area;
+}
+
+const std::vector<UmbraArc>& ExactUmbra::penumbra_boundary() const {
+  return impl_->penumbra_boundary;
 }
 
 bool ExactUmbra::joint() const {
@@ -736,11 +779,8 @@ std::size_t ExactUmbra::cells() const {
 }
 
 ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
-                       const std::vector<UmbraOccluder>& occluders, const Region2& single,
-                       double tolerance) {
+                       const std::vector<UmbraOccluder>& occluders, double tolerance) {
   auto impl = std::make_shared<ExactUmbra::Impl>();
-  impl->single = single;
-  impl->area = CGAL::to_double(single.area);
   for (const Point2& p : face.ring) impl->face.push_back(rational_point(p));
   impl->frame = face.frame;
   const auto source = visible_source(face, q1, q2);
@@ -779,13 +819,17 @@ ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
   for (Sector& sector : impl->sectors) sweep.run(sector);
   if (impl->centre && in_ring(impl->face, *impl->centre)) {
     for (const Sector& sector : impl->sectors)
-      for (const Column& column : sector.columns) impl->centre_label |= column.labels.front() != 0;
+      for (const Column& column : sector.columns)
+        impl->centre_label |= column.labels.front() == kUmbra;
   }
   const std::size_t n = impl->sectors.size();
   for (std::size_t k = 0; k < n; ++k) {
     const Sector* next = n == 4 ? &impl->sectors[(k + 1) % n] : nullptr;
-    trace_boundary(*impl, impl->sectors[k], tolerance, next);
-    impl->area += sector_area(*impl, impl->sectors[k], CGAL::to_double(face.area));
+    const double scale = CGAL::to_double(face.area);
+    trace_boundary(*impl, impl->sectors[k], tolerance, next, kUmbra, impl->boundary);
+    trace_boundary(*impl, impl->sectors[k], tolerance, next, kPenumbra, impl->penumbra_boundary);
+    impl->area += sector_area(*impl, impl->sectors[k], scale, kUmbra);
+    impl->penumbra_area += sector_area(*impl, impl->sectors[k], scale, kPenumbra);
   }
   return ExactUmbra(std::move(impl));
 }

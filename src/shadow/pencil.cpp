@@ -206,7 +206,7 @@ PencilTrace Pencil::trace(const Quadratic2& q) const {
       trace.rays = c0;  // lines of the pencil (or nothing when c0 is a nonzero constant)
       return trace;
     }
-    if (c0.zero()) {
+    if (c0.zero() && finite_) {
       trace.rays = c1;  // r = 0: lines through x0
       return trace;
     }
@@ -223,13 +223,14 @@ PencilTrace Pencil::trace(const Quadratic2& q) const {
   }
   // A common factor of num and den is a line of the pencil on the curve (a degenerate
   // conic); the rest is met once per line.
-  const Poly common = gcd(num, den);
+  const Poly common = num.zero() ? Poly() : gcd(num, den);
   if (common.degree() >= 1) {
     trace.rays = common;
     num = exact_quotient(num, common);
     den = exact_quotient(den, common);
   }
-  if (den.degree() >= 0 && !num.zero()) trace.curve = PencilCurve{num, den};
+  // (r = 0 is the centre of a cone, but a line like any other across parallel lines)
+  if (!finite_ || !num.zero()) trace.curve = PencilCurve{num, den};
   return trace;
 }
 

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "penumbra/geometry/convex_polyhedron.h"
@@ -29,6 +30,7 @@ namespace penumbra {
 struct UmbraOccluder {
   const ConvexPolyhedron* solid;
   Ring2 shadow;
+  std::optional<Ring2> umbra;  // its single umbra (OccluderShadow::umbra), convex
 };
 
 // A piece of the umbra's boundary: part of a line or a conic of the face's frame,
@@ -49,13 +51,16 @@ class ExactUmbra {
 
   // returns true when p (frame coordinates) lies in the closed umbra. Exact.
   bool contains(const Point2& p) const;
-  // the umbra's area in frame units (world area = area |u| |v|): the single umbrae's
-  // exactly, plus the joint part's by Gauss-Legendre quadrature of the exact cells' bounds
-  // (1e-13 relative per column).
+  // returns true when p lies in the closed penumbra (shadow - umbra, regularized). Exact.
+  bool in_penumbra(const Point2& p) const;
+  // the umbra's area in frame units (world area = area |u| |v|), by Gauss-Legendre
+  // quadrature over s of the exact cells' bounds (1e-13 relative per column).
   double area() const;
-  // the boundary of the joint part, piece by piece (not chained into rings); the single
-  // umbrae's boundaries are the straight rings of FaceShadow::umbra.
+  // the umbra's boundary, piece by piece (not chained into rings).
   const std::vector<UmbraArc>& boundary() const;
+  // the penumbra (shadow - umbra): its area and boundary, alike.
+  double penumbra_area() const;
+  const std::vector<UmbraArc>& penumbra_boundary() const;
   // true when some part of the umbra is covered by no single occluder alone.
   bool joint() const;
   // the number of cells of the decomposition (columns x cells), for benchmarks.
@@ -65,14 +70,13 @@ class ExactUmbra {
   std::shared_ptr<const Impl> impl_;
 };
 
-// computes the exact umbra of the source q1q2 on face (the source cut by the face's plane,
-// Fig. 7 S3) under the convex occluders: single, the union of their single umbrae
-// (FaceShadow::umbra), and the joint part, which the sweep finds where two occluders'
-// whole shadows overlap (outside, one occluder at most hides anything). tolerance: the
-// densified boundary's chord error, in world units. Precondition: the visible part of the
-// source meets no occluder.
+// computes the exact umbra and penumbra of the source q1q2 on face (the source cut by the
+// face's plane, Fig. 7 S3) under the convex occluders: the single umbrae (straight, the
+// occluders' umbra rings) and the joint part, which the sweep finds where two occluders'
+// whole shadows overlap and both ends of the source are hidden (elsewhere at most one
+// occluder hides anything, or some end is seen). tolerance: the densified boundary's chord
+// error, in world units. Precondition: the visible part of the source meets no occluder.
 ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
-                       const std::vector<UmbraOccluder>& occluders, const Region2& single,
-                       double tolerance = 1e-6);
+                       const std::vector<UmbraOccluder>& occluders, double tolerance = 1e-6);
 
 }  // namespace penumbra
