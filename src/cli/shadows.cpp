@@ -36,6 +36,7 @@ struct ShadowsArguments {
   std::string receivers;
   std::string times;
   std::string dask;
+  bool joint_umbrae = false;
 };
 
 int run_shadows(const ShadowsArguments& arguments) {
@@ -60,6 +61,7 @@ int run_shadows(const ShadowsArguments& arguments) {
   if (arguments.range_lux > 0) options.range_lux = arguments.range_lux;
   if (!arguments.receivers.empty())
     options.receivers = faces_of_objects(scene, select_objects(scene, arguments.receivers));
+  options.joint_umbrae = arguments.joint_umbrae;
   if (!arguments.times.empty()) {
     // A shadow diagram: JSON and a plan-view SVG over several times (shadow_diagram.h).
     for (const auto& [given, name] :
@@ -133,6 +135,9 @@ void register_shadows(CLI::App& app) {
                  "add exact rational coordinates (\"p/q\") under \"exact\" keys");
   verb->add_option("--light", arguments->light, "only the light of this name");
   verb->add_option("--svg", arguments->svg, "SVG drawing of faces and shadows");
+  verb->add_flag("--joint-umbrae", arguments->joint_umbrae,
+                 "linear sources: exact umbrae where occluders hide the tube together, with "
+                 "conic edges (JSON \"arcs\"; docs/linear-shadows.md)");
   verb->add_flag("--loops", arguments->loops,
                  "SVG: draw the raw penumbra and umbra loops of linear sources with arrows");
   verb->add_option("--view", arguments->view,

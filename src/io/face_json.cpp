@@ -120,6 +120,82 @@ void emit_region(JsonEmitter& out, const Region2& region, const FaceOutput& face
   out.end_object();
 }
 
+namespace {
+
+// a curved ring's points in world doubles: origin + s u + t v.
+void emit_curved_ring(JsonEmitter& out, const CurvedRing& ring, const FaceFrame& frame) {
+  const Vec3d o = to_double(frame.origin()), u = to_double(frame.u()), v = to_double(frame.v());
+  out.begin_array();
+  for (const auto& p : ring.points) {
+    out.begin_array();
+    for (int k = 0; k < 3; ++k) out.number(o[k] + p[0] * u[k] + p[1] * v[k]);
+    out.end_array();
+  }
+  out.end_array();
+}
+
+void emit_arcs(JsonEmitter& out, const CurvedRing& ring) {
+  out.begin_array();
+  for (const RingArc& arc : ring.arcs) {
+    out.begin_object();
+    out.key("conic");
+    out.begin_array();
+    for (const Exact& c : arc.curve) out.string(rational_string(c));
+    out.end_array();
+    out.key("first");
+    out.integer(arc.first);
+    out.key("joint");
+    out.boolean(arc.joint);
+    out.key("last");
+    out.integer(arc.last);
+    out.end_object();
+  }
+  out.end_array();
+}
+
+}  // namespace
+
+void emit_curved_region(JsonEmitter& out, const std::vector<CurvedPolygon>& polygons,
+                        double frame_area, const FaceOutput& face) {
+  const FaceFrame& frame = face.face.frame;
+  out.begin_object();
+  out.key("area");
+  out.number(frame_area * std::sqrt(rounded(frame.squared_u()) * rounded(frame.squared_v())));
+  // the frame of the conics, exactly: a point is origin + s u + t v (u, v not unit).
+  out.key("axes");
+  out.begin_object();
+  out.key("origin");
+  emit_exact_point(out, CGAL::exact(frame.origin()));
+  for (const auto& [name, axis] : {std::pair{"u", &frame.u()}, std::pair{"v", &frame.v()}}) {
+    out.key(name);
+    out.begin_array();
+    const RationalVector3 exact = CGAL::exact(*axis);
+    for (int k = 0; k < 3; ++k) out.string(rational_string(exact[k]));
+    out.end_array();
+  }
+  out.end_object();
+  out.key("polygons");
+  out.begin_array();
+  for (const CurvedPolygon& polygon : polygons) {
+    out.begin_object();
+    out.key("arcs");
+    emit_arcs(out, polygon.outer);
+    out.key("hole_arcs");
+    out.begin_array();
+    for (const CurvedRing& hole : polygon.holes) emit_arcs(out, hole);
+    out.end_array();
+    out.key("holes");
+    out.begin_array();
+    for (const CurvedRing& hole : polygon.holes) emit_curved_ring(out, hole, frame);
+    out.end_array();
+    out.key("outer");
+    emit_curved_ring(out, polygon.outer, frame);
+    out.end_object();
+  }
+  out.end_array();
+  out.end_object();
+}
+
 void emit_plane(JsonEmitter& out, const Plane3& plane, bool exact) {
   out.begin_array();
   if (exact) {

@@ -10,6 +10,7 @@
 
 #include "json_emitter.h"
 #include "penumbra/io/rational.h"
+#include "penumbra/shadow/exact_umbra.h"
 #include "penumbra/shadow/shadow_map.h"
 
 namespace penumbra::io {
@@ -51,6 +52,15 @@ void emit_ring(JsonEmitter& out, const Ring2& ring, const FaceOutput& output, bo
 void emit_region(JsonEmitter& out, const Region2& region, const FaceOutput& face, bool exact);
 // a region's "polygons" member: each polygon's rings, with "exact" rationals on request.
 void emit_polygons(JsonEmitter& out, const Region2& region, const FaceOutput& face, bool exact);
+// a curved region (the exact umbra or penumbra of joint occlusion, shadow/exact_umbra.h) as
+// {"area": m^2, "axes": {"origin", "u", "v"}, "polygons": [{"arcs": [...], "hole_arcs":
+// [[...], ...], "holes": [...], "outer": [...]}]}: the rings' points (the arcs densified)
+// in world doubles, and per ring its curved edges {"conic": six rationals a..f of
+// a s^2 + b s t + c t^2 + d s + e t + f = 0, "first", "joint", "last"} in the exact frame
+// that axes gives (origin + s u + t v, rationals); points first..last lie on the arc, and
+// last may be the ring's length: the arc ends at its first point.
+void emit_curved_region(JsonEmitter& out, const std::vector<CurvedPolygon>& polygons,
+                        double frame_area, const FaceOutput& face);
 // the plane scaled to a unit normal, in doubles; exactly, scaled so that its largest
 // normal component has magnitude 1 (a canonical exact form).
 void emit_plane(JsonEmitter& out, const Plane3& plane, bool exact);

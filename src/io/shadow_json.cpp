@@ -212,7 +212,10 @@ void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& sha
     emit_occluder(out, scene, occluder, face, exact);
   out.end_array();
   out.key("penumbra");
-  if (shadow.linear) {
+  if (shadow.curved) {
+    emit_curved_region(out, shadow.curved->penumbra_polygons(), shadow.curved->penumbra_area(),
+                       face);
+  } else if (shadow.linear) {
     emit_region(out, shadow.penumbra, face, exact);
   } else {  // point and directional sources: no penumbra
     emit_region(out, Region2{}, face, false);
@@ -224,7 +227,10 @@ void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& sha
     out.boolean(shadow.source_clipped);
   }
   out.key("umbra");
-  emit_region(out, shadow.linear ? shadow.umbra : shadow.shadow, face, exact);
+  if (shadow.curved)
+    emit_curved_region(out, shadow.curved->umbra_polygons(), shadow.curved->area(), face);
+  else
+    emit_region(out, shadow.linear ? shadow.umbra : shadow.shadow, face, exact);
   out.end_object();
 }
 

@@ -69,11 +69,8 @@ Algebraic algebraic(const Rational& x) {
   return Algebraic(bound(x));
 }
 
-// the real roots of p strictly between low and high, increasing.
-std::vector<Algebraic> roots_between(const Poly& p, const Algebraic& low, const Algebraic& high) {
-  std::vector<Algebraic> result;
-  if (p.degree() < 1) return result;
-  // clear denominators: integer coefficients, the same roots.
+// returns p with integer coefficients (times the common denominator): the same roots.
+AK::Polynomial_1 integer_polynomial(const Poly& p) {
   mpz_t scale;
   mpz_init_set_ui(scale, 1);
   for (const Rational& c : p.c) mpz_lcm(scale, scale, mpq_denref(gmp(c)));
@@ -87,9 +84,15 @@ std::vector<Algebraic> roots_between(const Poly& p, const Algebraic& low, const 
     mpz_clear(n);
   }
   mpz_clear(scale);
-  const AK::Polynomial_1 polynomial(coefficients.begin(), coefficients.end());
+  return AK::Polynomial_1(coefficients.begin(), coefficients.end());
+}
+
+// the real roots of p strictly between low and high, increasing.
+std::vector<Algebraic> roots_between(const Poly& p, const Algebraic& low, const Algebraic& high) {
+  std::vector<Algebraic> result;
+  if (p.degree() < 1) return result;
   std::vector<std::pair<Algebraic, AK::Multiplicity_type>> roots;
-  algebraic_kernel().solve_1_object()(polynomial, std::back_inserter(roots));
+  algebraic_kernel().solve_1_object()(integer_polynomial(p), std::back_inserter(roots));
   for (const auto& root : roots)
     if (root.first > low && root.first < high) result.push_back(root.first);
   return result;
@@ -173,6 +176,21 @@ std::optional<Rational> r_at(const Curve& curve, const Rational& s) {
   return -curve.f.num(s) / den;
 }
 
+// An end of a boundary piece, exactly: on the line s of the pencil of sector (an algebraic
+// s), on curve (an id) or, for a piece of a pencil line (curve -1), at the rational r.
+struct PieceEnd {
+  int sector;
+  Algebraic s;
+  int curve;
+  std::optional<Rational> r;
+  std::optional<Rational> ray_s;  // s, for a piece of a pencil line (always rational)
+};
+
+struct BoundaryPiece {
+  UmbraArc arc;
+  PieceEnd start, end;
+};
+
 }  // namespace
 
 struct ExactUmbra::Impl {
@@ -185,6 +203,7 @@ struct ExactUmbra::Impl {
   bool centre_label = false;
   double area = 0, penumbra_area = 0;
   std::vector<UmbraArc> boundary, penumbra_boundary;
+  std::vector<CurvedPolygon> umbra_polygons, penumbra_polygons;
   bool joint = false;
   std::size_t cells = 0;
 
@@ -265,10 +284,9 @@ class Sweep {
 
     // Curves of the lines, registered once per sector.
     std::vector<int> line_ids;
-    for (std::size_t k = 0; k < line_curves.size(); ++k) {
-      line_ids.push_back(static_cast<int>(impl_.curves.size()));
-      impl_.curves.push_back({line_traces[k], lines_[line_curves[k]].line.line(), false});
-    }
+    known_.clear();
+    for (std::size_t k = 0; k < line_curves.size(); ++k)
+      line_ids.push_back(register_curve(line_traces[k], lines_[line_curves[k]].line.line(), false));
     for (std::size_t k = 0; k + 1 < seams.size(); ++k)
       slab(sector, seams[k], seams[k + 1], line_curves, line_ids);
   }
@@ -353,6 +371,24 @@ class Sweep {
   }
 
   RationalPoint3 world(const RationalPoint2& p) const { return face_.frame.to_world(p); }
+
+  // returns the id of the curve r = -num / den of this sector, registering it when new: one
+  // id per curve (num and den have no common factor, so dividing both by den's leading
+  // coefficient makes the pair unique), so that a degenerate conic along a line of the sweep
+  // is that line, and pieces of one curve chain and merge.
+  int register_curve(const PencilCurve& f, const Quadratic2& q, bool joint) {
+    const Rational lead = f.den.c.back();
+    std::vector<Rational> key;
+    for (const Rational& c : f.num.c) key.push_back(c / lead);
+    key.push_back(Rational(f.num.c.size()));  // separates num's coefficients from den's
+    for (const Rational& c : f.den.c) key.push_back(c / lead);
+    const auto found = known_.find(key);
+    if (found != known_.end()) return found->second;
+    const int id = static_cast<int>(impl_.curves.size());
+    impl_.curves.push_back({f, q, joint});
+    known_.emplace(std::move(key), id);
+    return id;
+  }
 
   // the label of a point inside a cell (off every curve of the sweep): outside the shadows,
   // in a single umbra (the straight rings), or, where occluders may hide the source
@@ -450,8 +486,7 @@ class Sweep {
           const detail::PencilTrace trace = pencil.trace(q);
           if (!trace.rays.zero()) crossings.push_back(trace.rays);
           if (!trace.curve) continue;
-          portion.conics.push_back(static_cast<int>(impl_.curves.size()));
-          impl_.curves.push_back({*trace.curve, q, true});
+          portion.conics.push_back(register_curve(*trace.curve, q, true));
         }
       portions.push_back(std::move(portion));
     }
@@ -479,7 +514,6 @@ class Sweep {
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
 
-    std::map<std::pair<int, int>, Label> labels;
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
       Column column;
       column.low = cuts[k];
@@ -503,14 +537,6 @@ class Sweep {
                at.end());
       for (const auto& entry : at) column.curves.push_back(entry.second);
       for (std::size_t cell = 0; cell <= at.size(); ++cell) {
-        // A cell between the same two curves in another column of the slab is the same
-        // open region (columns end where curves cross, not on lines of the pencil).
-        const std::pair<int, int> between{cell == 0 ? -1 : at[cell - 1].second,
-                                          cell == at.size() ? -1 : at[cell].second};
-        if (const auto known = labels.find(between); known != labels.end()) {
-          column.labels.push_back(known->second);
-          continue;
-        }
         Rational r;
         if (at.empty()) {
           r = 1;
@@ -525,7 +551,6 @@ class Sweep {
         const RationalPoint2 p = pencil.point(s, r);
         const Label label = label_of(p);
         column.labels.push_back(label);
-        labels[between] = label;
       }
       impl_.cells += column.labels.size();
       sector.columns.push_back(std::move(column));
@@ -537,6 +562,7 @@ class Sweep {
   RationalPoint3 q1_, q2_;
   std::vector<detail::RationalSolid> solids_;
   std::vector<std::vector<RationalPoint2>> shadows_;
+  std::map<std::vector<Rational>, int> known_;       // this sector's curves (register_curve)
   std::vector<std::vector<RationalPoint2>> umbrae_;  // empty: no single umbra
   std::vector<SweepLine> lines_;
   std::vector<Affine2> rays_;
@@ -584,28 +610,35 @@ UmbraArc arc_of(const Curve& curve) {
 }
 
 // The boundary pieces of one sector: curve pieces inside columns, merged along a curve
-// across columns, and pieces of pencil lines at the seams between slabs.
-void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double tolerance,
-                    const Sector* next, char kind, std::vector<UmbraArc>& boundary) {
+// across columns, and pieces of pencil lines at the seams between slabs. Each piece keeps
+// its exact ends for chaining.
+void trace_boundary(const ExactUmbra::Impl& impl, int sector_index, double tolerance,
+                    const Sector* next, char kind, std::vector<BoundaryPiece>& pieces) {
+  const Sector& sector = impl.sectors[sector_index];
   const Pencil& pencil = sector.pencil;
   struct Open {
-    double s0, s1;
+    std::size_t first, last;  // columns
     bool above;
   };
+  const auto& columns = sector.columns;
   std::map<int, Open> open;  // curve id -> piece being extended
   auto close = [&](int id) {
     const Open& piece = open.at(id);
-    UmbraArc arc = arc_of(impl.curves[id]);
+    BoundaryPiece result;
+    result.arc = arc_of(impl.curves[id]);
     // Larger r lies on the side r_side() of increasing s; keep the umbra on the left.
     const bool forward = piece.above == (pencil.r_side() > 0);
-    densify(pencil, impl.curves[id], impl.frame, forward ? piece.s0 : piece.s1,
-            forward ? piece.s1 : piece.s0, tolerance, arc.points);
-    boundary.push_back(std::move(arc));
+    const Algebraic& low = columns[piece.first].low;
+    const Algebraic& high = columns[piece.last].high;
+    densify(pencil, impl.curves[id], impl.frame, approximate(forward ? low : high),
+            approximate(forward ? high : low), tolerance, result.arc.points);
+    result.start = {sector_index, forward ? low : high, id, {}, {}};
+    result.end = {sector_index, forward ? high : low, id, {}, {}};
+    pieces.push_back(std::move(result));
     open.erase(id);
   };
-  for (std::size_t c = 0; c < sector.columns.size(); ++c) {
-    const Column& column = sector.columns[c];
-    const double s0 = approximate(column.low), s1 = approximate(column.high);
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    const Column& column = columns[c];
     std::map<int, bool> here;
     for (std::size_t k = 0; k < column.curves.size(); ++k)
       if ((column.labels[k] == kind) != (column.labels[k + 1] == kind))
@@ -613,16 +646,16 @@ void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double toleran
     for (auto it = open.begin(); it != open.end();) {
       const auto found = here.find(it->first);
       const bool continues =
-          found != here.end() && found->second == it->second.above && it->second.s1 == s0;
+          found != here.end() && found->second == it->second.above && it->second.last + 1 == c;
       ++it;
       if (!continues) close(std::prev(it)->first);
     }
     for (const auto& [id, above] : here) {
       auto found = open.find(id);
       if (found != open.end())
-        found->second.s1 = s1;
+        found->second.last = c;
       else
-        open[id] = {s0, s1, above};
+        open[id] = {c, c, above};
     }
   }
   while (!open.empty()) close(open.begin()->first);
@@ -646,26 +679,29 @@ void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double toleran
       const bool left = before && impl.label_at(*before, s, r, kind);
       const bool right = after && impl.label_at(*after, s_after, r, kind);
       if (left == right) continue;
-      UmbraArc arc;
+      BoundaryPiece piece;
       // the pencil line through pencil.point(s, r): two of its points make the line.
       const RationalPoint2 a = pencil.point(s, breaks[k]), b = pencil.point(s, breaks[k + 1]);
       const Affine2 line = line_through(a, b);
-      arc.curve = {Exact(0),
-                   Exact(0),
-                   Exact(0),
-                   exact_number(line.d),
-                   exact_number(line.e),
-                   exact_number(line.f)};
+      piece.arc.curve = {Exact(0),
+                         Exact(0),
+                         Exact(0),
+                         exact_number(line.d),
+                         exact_number(line.e),
+                         exact_number(line.f)};
       // The larger-s side is left of increasing r when r_side() < 0.
       const bool forward = right == (pencil.r_side() < 0);
       const std::array<double, 2> pa = {CGAL::to_double(a.x()), CGAL::to_double(a.y())};
       const std::array<double, 2> pb = {CGAL::to_double(b.x()), CGAL::to_double(b.y())};
-      arc.points = forward ? std::vector<std::array<double, 2>>{pa, pb}
-                           : std::vector<std::array<double, 2>>{pb, pa};
-      boundary.push_back(std::move(arc));
+      piece.arc.points = forward ? std::vector<std::array<double, 2>>{pa, pb}
+                                 : std::vector<std::array<double, 2>>{pb, pa};
+      const PieceEnd low{sector_index, algebraic(s), -1, breaks[k], s};
+      const PieceEnd high{sector_index, algebraic(s), -1, breaks[k + 1], s};
+      piece.start = forward ? low : high;
+      piece.end = forward ? high : low;
+      pieces.push_back(std::move(piece));
     }
   };
-  const auto& columns = sector.columns;
   const Column* first = columns.empty() ? nullptr : &columns.front();
   const Column* last = columns.empty() ? nullptr : &columns.back();
   if (!next) seam(nullptr, first, pencil.s_low(), pencil.s_low());
@@ -681,6 +717,123 @@ void trace_boundary(ExactUmbra::Impl& impl, const Sector& sector, double toleran
   } else {
     seam(last, nullptr, pencil.s_high(), pencil.s_high());
   }
+}
+
+// the exact r of a piece's end, when its s is the rational s: the ray's own r, or the
+// curve's value there.
+std::optional<Rational> r_of(const ExactUmbra::Impl& impl, const PieceEnd& end, const Rational& s) {
+  if (end.curve < 0) return end.r;
+  return r_at(impl.curves[end.curve], s);
+}
+
+// true when two ends of pieces are the same point, decided exactly: on the same line of the
+// pencil (the same sector and s, or the seam between two quadrants) at the same r, or both
+// at the centre.
+bool same_point(const ExactUmbra::Impl& impl, const PieceEnd& a, const PieceEnd& b) {
+  const bool finite = impl.sectors[a.sector].pencil.finite();
+  if (finite && a.curve < 0 && b.curve < 0 && CGAL::is_zero(*a.r) && CGAL::is_zero(*b.r))
+    return true;                   // the centre
+  std::optional<Rational> sa, sb;  // rational s of each end on a shared ray, if any
+  if (a.sector == b.sector) {
+    if (a.s != b.s) return false;
+    if (a.curve >= 0 && b.curve >= 0) {
+      if (a.curve == b.curve) return true;
+      // r_a(s) = r_b(s) at an algebraic s: the crossing polynomial vanishes there (it is
+      // zero for two copies of one curve, a nonzero constant for curves that never meet).
+      const PencilCurve& f = impl.curves[a.curve].f;
+      const PencilCurve& g = impl.curves[b.curve].f;
+      const Poly crossing = f.num * g.den - g.num * f.den;
+      if (crossing.zero()) return true;
+      if (crossing.degree() == 0) return false;
+      return algebraic_kernel().sign_at_1_object()(integer_polynomial(crossing), a.s) == CGAL::ZERO;
+    }
+    const PieceEnd& ray = a.curve < 0 ? a : b;
+    sa = sb = *ray.ray_s;
+  } else {
+    // quadrants k and k + 1 (mod 4) share the ray s = 1 of k, s = 0 of k + 1
+    const auto seam_s = [&](const PieceEnd& x, const PieceEnd& y) -> std::optional<Rational> {
+      if ((x.sector + 1) % 4 == y.sector && x.s == algebraic(1)) return Rational(1);
+      if ((y.sector + 1) % 4 == x.sector && x.s == algebraic(0)) return Rational(0);
+      return std::nullopt;
+    };
+    sa = seam_s(a, b);
+    sb = seam_s(b, a);
+    if (!sa || !sb) return false;
+  }
+  const auto ra = r_of(impl, a, *sa), rb = r_of(impl, b, *sb);
+  return ra && rb && *ra == *rb;
+}
+
+// chains the pieces into rings (each piece's end to the piece starting there, decided by
+// same_point among the starts near it in doubles), outer rings counter-clockwise and holes
+// clockwise, each hole in the smallest outer ring around it.
+std::vector<CurvedPolygon> chain(const ExactUmbra::Impl& impl, std::vector<BoundaryPiece> pieces,
+                                 double scale) {
+  std::vector<CurvedRing> rings;
+  std::vector<bool> used(pieces.size(), false);
+  const double near = 1e-6 * scale;
+  for (std::size_t first = 0; first < pieces.size(); ++first) {
+    if (used[first]) continue;
+    CurvedRing ring;
+    std::size_t k = first;
+    while (true) {
+      used[k] = true;
+      const UmbraArc& arc = pieces[k].arc;
+      const std::size_t from = ring.points.empty() ? 0 : ring.points.size() - 1;
+      for (std::size_t i = ring.points.empty() ? 0 : 1; i < arc.points.size(); ++i)
+        ring.points.push_back(arc.points[i]);
+      if (!arc.straight) ring.arcs.push_back({from, ring.points.size() - 1, arc.curve, arc.joint});
+      const std::array<double, 2>& tail = arc.points.back();
+      std::optional<std::size_t> following;
+      for (std::size_t j = 0; j < pieces.size() && !following; ++j) {
+        if (used[j] && j != first) continue;
+        const std::array<double, 2>& head = pieces[j].arc.points.front();
+        if (std::abs(head[0] - tail[0]) > near || std::abs(head[1] - tail[1]) > near) continue;
+        if (same_point(impl, pieces[k].end, pieces[j].start)) following = j;
+      }
+      if (!following) throw std::logic_error("exact_umbra: a boundary does not close");
+      if (*following == first) break;
+      k = *following;
+    }
+    ring.points.pop_back();  // the first point again
+    rings.push_back(std::move(ring));
+  }
+  const auto signed_area = [](const CurvedRing& ring) {
+    double sum = 0;
+    for (std::size_t i = 0, n = ring.points.size(); i < n; ++i) {
+      const auto& a = ring.points[i];
+      const auto& b = ring.points[(i + 1) % n];
+      sum += a[0] * b[1] - a[1] * b[0];
+    }
+    return sum / 2;
+  };
+  const auto inside = [](const CurvedRing& ring, const std::array<double, 2>& p) {
+    bool in = false;
+    for (std::size_t i = 0, n = ring.points.size(), j = n - 1; i < n; j = i++) {
+      const auto& a = ring.points[i];
+      const auto& b = ring.points[j];
+      if ((a[1] > p[1]) != (b[1] > p[1]) &&
+          p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0])
+        in = !in;
+    }
+    return in;
+  };
+  std::vector<CurvedPolygon> polygons;
+  std::vector<double> areas;
+  for (CurvedRing& ring : rings)
+    if (signed_area(ring) > 0) {
+      areas.push_back(signed_area(ring));
+      polygons.push_back({std::move(ring), {}});
+    }
+  for (CurvedRing& ring : rings) {
+    if (ring.points.empty() || signed_area(ring) > 0) continue;
+    std::optional<std::size_t> best;
+    for (std::size_t k = 0; k < polygons.size(); ++k)
+      if (inside(polygons[k].outer, ring.points.front()) && (!best || areas[k] < areas[*best]))
+        best = k;
+    if (best) polygons[*best].holes.push_back(std::move(ring));
+  }
+  return polygons;
 }
 
 // the umbra's area in one sector: per column, the integral over s of the cells' extent
@@ -762,6 +915,14 @@ const std::vector<UmbraArc>& ExactUmbra::boundary() const {
   return impl_->boundary;
 }
 
+const std::vector<CurvedPolygon>& ExactUmbra::umbra_polygons() const {
+  return impl_->umbra_polygons;
+}
+
+const std::vector<CurvedPolygon>& ExactUmbra::penumbra_polygons() const {
+  return impl_->penumbra_polygons;
+}
+
 double ExactUmbra::penumbra_area() const {
   return impl_->penumbra_area;
 }
@@ -823,14 +984,22 @@ ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
         impl->centre_label |= column.labels.front() == kUmbra;
   }
   const std::size_t n = impl->sectors.size();
+  std::vector<BoundaryPiece> umbra_pieces, penumbra_pieces;
   for (std::size_t k = 0; k < n; ++k) {
     const Sector* next = n == 4 ? &impl->sectors[(k + 1) % n] : nullptr;
     const double scale = CGAL::to_double(face.area);
-    trace_boundary(*impl, impl->sectors[k], tolerance, next, kUmbra, impl->boundary);
-    trace_boundary(*impl, impl->sectors[k], tolerance, next, kPenumbra, impl->penumbra_boundary);
+    trace_boundary(*impl, static_cast<int>(k), tolerance, next, kUmbra, umbra_pieces);
+    trace_boundary(*impl, static_cast<int>(k), tolerance, next, kPenumbra, penumbra_pieces);
     impl->area += sector_area(*impl, impl->sectors[k], scale, kUmbra);
     impl->penumbra_area += sector_area(*impl, impl->sectors[k], scale, kPenumbra);
   }
+  for (const BoundaryPiece& piece : umbra_pieces) impl->boundary.push_back(piece.arc);
+  for (const BoundaryPiece& piece : penumbra_pieces) impl->penumbra_boundary.push_back(piece.arc);
+  double size = 0;  // the face's extent in frame units, for the chaining's candidates
+  for (const RationalPoint2& p : impl->face)
+    size = std::max({size, std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y()))});
+  impl->umbra_polygons = chain(*impl, std::move(umbra_pieces), size);
+  impl->penumbra_polygons = chain(*impl, std::move(penumbra_pieces), size);
   return ExactUmbra(std::move(impl));
 }
 

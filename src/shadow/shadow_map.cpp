@@ -8,6 +8,7 @@
 #include "mesh_face_shadow.h"
 #include "penumbra/base/input_error.h"
 #include "penumbra/base/parallel.h"
+#include "penumbra/shadow/exact_umbra.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/shadow_polygon.h"
 #include "penumbra/visibility/lighting_sphere.h"
@@ -278,7 +279,19 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
         for (std::size_t o : occluders_of)
           occluders.push_back({o, &scene.objects[o].solid, &whole[o]});
         try {
-          return linear_face_shadow(shading.face(receiver), q1, q2, std::move(occluders));
+          const Face& face = shading.face(receiver);
+          FaceShadow shadow = linear_face_shadow(face, q1, q2, std::move(occluders));
+          if (options.joint_umbrae && shadow.joint_occlusion) {
+            std::vector<UmbraOccluder> solids;
+            for (const OccluderShadow& o : shadow.occluders)
+              solids.push_back({&scene.objects[o.occluder].solid, o.polygon, o.umbra});
+            auto curved = std::make_shared<const ExactUmbra>(exact_umbra(face, q1, q2, solids));
+            // The flag now says that the umbra has joint parts; without them the straight
+            // sets are the exact ones (DESIGN.md, "Shadow loops output").
+            shadow.joint_occlusion = curved->joint();
+            if (shadow.joint_occlusion) shadow.curved = std::move(curved);
+          }
+          return shadow;
         } catch (const std::domain_error&) {
           throw InputError(scene.file.string(), light.json_path,
                            "the linear source '" + light.name +

@@ -9,8 +9,10 @@
 #include <random>
 
 #include "penumbra/illuminance/occlusion.h"
+#include "penumbra/scene/load_scene.h"
 #include "penumbra/shadow/exact_umbra.h"
 #include "penumbra/shadow/linear_face_shadow.h"
+#include "penumbra/shadow/shadow_map.h"
 #include "solids.h"
 
 using namespace penumbra;
@@ -36,6 +38,18 @@ bool oracle_covered(const Face& face, const Point3& q1, const Point3& q2,
 
 // returns the exact umbra of the solids, and checks that its area and the penumbra's add up
 // to the straight shadow's exact area (the sweep's quadrature against the polygon sets).
+// returns the signed area of a ring's polyline (frame units) and adds its world length.
+double polyline_area(const CurvedRing& ring, double& length) {
+  double sum = 0;
+  for (std::size_t i = 0, n = ring.points.size(); i < n; ++i) {
+    const auto& a = ring.points[i];
+    const auto& b = ring.points[(i + 1) % n];
+    sum += a[0] * b[1] - a[1] * b[0];
+    length += std::hypot(b[0] - a[0], b[1] - a[1]) * 144;  // bounded by the largest axis
+  }
+  return sum / 2;
+}
+
 // x is in the shadow when some solid hides part of the visible source (an open interval).
 bool oracle_shadowed(const Face& face, const Point3& q1, const Point3& q2,
                      const std::vector<ConvexPolyhedron>& solids, const Point3& x) {
@@ -60,6 +74,21 @@ ExactUmbra umbra_of(const Face& face, const Point3& q1, const Point3& q2,
   BOOST_TEST(std::abs(umbra.area() + umbra.penumbra_area() - shadow_area) <=
              1e-12 * CGAL::to_double(face.area));
   BOOST_TEST(umbra.area() >= CGAL::to_double(shadow.umbra.area) * (1 - 1e-12));
+  // The chained rings enclose the integrated areas, to the densification's error (chords
+  // within 1e-6 m of the arcs: at most 1e-6 m times the rings' length).
+  for (const auto* polygons : {&umbra.umbra_polygons(), &umbra.penumbra_polygons()}) {
+    double ring_area = 0, length = 0;
+    for (const CurvedPolygon& polygon : *polygons) {
+      ring_area += polyline_area(polygon.outer, length);
+      for (const CurvedRing& hole : polygon.holes) ring_area += polyline_area(hole, length);
+    }
+    const double expected =
+        polygons == &umbra.umbra_polygons() ? umbra.area() : umbra.penumbra_area();
+    const double scale =
+        std::sqrt(CGAL::to_double(face.frame.squared_u() * face.frame.squared_v()));
+    BOOST_TEST(std::abs(ring_area - expected) * scale <= 1e-6 * length + 1e-12,
+               "rings " << ring_area << " against " << expected);
+  }
   return umbra;
 }
 
@@ -292,6 +321,31 @@ BOOST_AUTO_TEST_CASE(the_joint_area_agrees_with_sampling) {
   const double sigma = std::sqrt(p * (1 - p) / samples) * face_area;
   const double scale = CGAL::to_double(face.frame.squared_u() * face.frame.squared_v());
   BOOST_TEST(std::abs(umbra.area() * std::sqrt(scale) - estimate) <= 5 * sigma + 1e-9);
+}
+
+// The scene pipeline (shadows --joint-umbrae): the two boards as a fixture; the floor's
+// joint_occlusion flag now says that its umbra has joint parts, and the curved sets are
+// those of exact_umbra; without the option the flag says only that shadows overlap.
+BOOST_AUTO_TEST_CASE(the_shadows_pipeline_carries_the_joint_umbrae) {
+  const Scene scene =
+      load_scene(std::string(PENUMBRA_SOURCE_DIR) + "/fixtures/scenes/linear-joint-umbra.json");
+  ShadowOptions options;
+  options.joint_umbrae = true;
+  const ShadowResult with = compute_shadows(scene, options);
+  const ShadowResult without = compute_shadows(scene);
+  int curved = 0;
+  for (std::size_t r = 0; r < with.receivers.size(); ++r) {
+    const FaceShadow& exact = with.lights[0].faces[r];
+    const FaceShadow& straight = without.lights[0].faces[r];
+    BOOST_TEST(exact.joint_occlusion == bool(exact.curved));
+    BOOST_TEST((!exact.joint_occlusion || straight.joint_occlusion));
+    if (!exact.curved) continue;
+    ++curved;
+    BOOST_TEST(scene.objects[with.receivers[r].object].name == "floor");
+    BOOST_TEST(exact.curved->area() > CGAL::to_double(straight.umbra.area));
+    BOOST_TEST(!exact.curved->umbra_polygons().empty());
+  }
+  BOOST_TEST(curved == 1);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -76,3 +76,43 @@ print(f"{sys.argv[1]}: DXF and CSV read back: {sum(len(r) for r in found.values(
 PY
 done
 echo "outputs: SVG, DXF and CSV read by xmllint, ezdxf and csv"
+
+# Exact joint umbrae in the JSON (--joint-umbrae): rings with "arcs" whose conics (six
+# rationals in the face's frame) vanish at the ring points they span, to the densification.
+"$penumbra" shadows "$source_dir/fixtures/scenes/linear-joint-umbra.json" --joint-umbrae \
+  -o "$work/joint.json"
+"$python" - "$work/joint.json" <<'PY'
+import json, sys
+from fractions import Fraction
+
+document = json.load(open(sys.argv[1]))
+joint_arcs = 0
+for face in document["faces"]:
+    for light in face["lights"]:
+        if not light["joint_occlusion"]:
+            continue
+        for region in ("umbra", "penumbra"):
+            axes = light[region]["axes"]
+            origin = [float(Fraction(k)) for k in axes["origin"]]
+            u = [float(Fraction(k)) for k in axes["u"]]
+            v = [float(Fraction(k)) for k in axes["v"]]
+            uu, vv = sum(k * k for k in u), sum(k * k for k in v)
+            for polygon in light[region]["polygons"]:
+                rings = [(polygon["outer"], polygon["arcs"])] + list(
+                    zip(polygon["holes"], polygon["hole_arcs"]))
+                for ring, arcs in rings:
+                    for arc in arcs:
+                        # last == len(ring): the arc ends at the ring's first point
+                        assert 0 <= arc["first"] < arc["last"] <= len(ring), arc
+                        a, b, c, d, e, f = (float(Fraction(k)) for k in arc["conic"])
+                        joint_arcs += arc["joint"]
+                        # frame coordinates of a world point (the axes are orthogonal)
+                        for point in (ring + ring[:1])[arc["first"]:arc["last"] + 1]:
+                            w = [point[k] - origin[k] for k in range(3)]
+                            s = sum(w[k] * u[k] for k in range(3)) / uu
+                            t = sum(w[k] * v[k] for k in range(3)) / vv
+                            value = a * s * s + b * s * t + c * t * t + d * s + e * t + f
+                            scale = abs(d) + abs(e) + abs(f) + abs(a) + abs(b) + abs(c)
+                            assert abs(value) <= 1e-6 * scale, (arc, point, value)
+assert joint_arcs > 0, "no joint arc"
+PY

@@ -44,6 +44,26 @@ struct UmbraArc {
   std::vector<std::array<double, 2>> points;
 };
 
+// A ring of a curved region: its points (frame coordinates, doubles) counter-clockwise for
+// an outer boundary and clockwise for a hole, the curved pieces densified as in UmbraArc;
+// arcs names the curved edges: points[first..last] lie on the conic (last may be
+// points.size(): the arc ends at the ring's first point).
+struct RingArc {
+  std::size_t first, last;
+  std::array<Exact, 6> curve;
+  bool joint = false;
+};
+
+struct CurvedRing {
+  std::vector<std::array<double, 2>> points;
+  std::vector<RingArc> arcs;
+};
+
+struct CurvedPolygon {
+  CurvedRing outer;
+  std::vector<CurvedRing> holes;
+};
+
 class ExactUmbra {
  public:
   struct Impl;
@@ -61,6 +81,10 @@ class ExactUmbra {
   // the penumbra (shadow - umbra): its area and boundary, alike.
   double penumbra_area() const;
   const std::vector<UmbraArc>& penumbra_boundary() const;
+  // the umbra and the penumbra as polygons with holes: the pieces chained through their
+  // exact ends (the same line of the pencil and the same r, compared exactly).
+  const std::vector<CurvedPolygon>& umbra_polygons() const;
+  const std::vector<CurvedPolygon>& penumbra_polygons() const;
   // true when some part of the umbra is covered by no single occluder alone.
   bool joint() const;
   // the number of cells of the decomposition (columns x cells), for benchmarks.

@@ -6,6 +6,7 @@
 // penumbra is empty (DESIGN.md, "Conventions").
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -14,6 +15,8 @@
 #include "penumbra/shadow/region.h"
 
 namespace penumbra {
+
+class ExactUmbra;
 
 struct OccluderShadow {
   std::size_t occluder;  // the occluding object's index (in the caller's numbering)
@@ -32,7 +35,11 @@ struct FaceShadow {
   bool beyond_range = false;    // the face lies wholly outside the sphere of lighting: not computed
   bool linear = false;          // computed for a linear source: umbra and penumbra below apply
   bool source_clipped = false;  // linear: the face's plane cuts the source (Fig. 7, S3)
-  bool joint_occlusion = false;           // linear: two occluders' penumbrae overlap
+  bool joint_occlusion = false;  // linear: two occluders' penumbrae overlap
+  // linear, with ShadowOptions::joint_umbrae: joint_occlusion then says that the umbra has
+  // joint parts, and this holds the exact umbra and penumbra with them and their conic edges
+  // (exact_umbra.h); umbra and penumbra below stay the straight sets of single occluders.
+  std::shared_ptr<const ExactUmbra> curved;
   std::vector<OccluderShadow> occluders;  // sorted by occluder
   Region2 shadow;                         // = umbra for point and directional sources
   Region2 umbra;                          // linear: union of the occluders' umbrae

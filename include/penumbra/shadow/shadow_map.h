@@ -39,6 +39,11 @@ struct ShadowOptions {
   // documents report it (docs/shadows.md, "Faces of real models"); false keeps the pieces
   // (the renderer draws them).
   bool unite_mesh_faces = true;
+  // linear sources: on faces where occluders' shadows overlap, compute the exact umbra with
+  // its joint parts and conic edges (FaceShadow::curved, docs/linear-shadows.md "Joint
+  // umbrae"); joint_occlusion then says whether it has joint parts. Faces of mesh parts,
+  // whose pieces are united, keep the straight sets.
+  bool joint_umbrae = false;
 };
 
 struct ShadowStats {
