@@ -9,6 +9,7 @@
 #include <random>
 
 #include "penumbra/illuminance/occlusion.h"
+#include "penumbra/illuminance/scene_illuminance.h"
 #include "penumbra/scene/load_scene.h"
 #include "penumbra/shadow/exact_umbra.h"
 #include "penumbra/shadow/linear_face_shadow.h"
@@ -344,6 +345,32 @@ BOOST_AUTO_TEST_CASE(the_shadows_pipeline_carries_the_joint_umbrae) {
     BOOST_TEST(scene.objects[with.receivers[r].object].name == "floor");
     BOOST_TEST(exact.curved->area() > CGAL::to_double(straight.umbra.area));
     BOOST_TEST(!exact.curved->umbra_polygons().empty());
+    // The illuminance layer integrates the visible parts of the tube exactly: 0 in the
+    // umbra, joint parts included, and positive in the penumbra (random points on a
+    // 1/64 m grid, decided by the curved sets).
+    const illuminance::IlluminanceSolver solver(scene);
+    const Face& face =
+        scene.objects[with.receivers[r].object].solid.faces()[with.receivers[r].face];
+    std::mt19937 random(31);
+    std::uniform_int_distribution<int> grid(-383, 383);
+    int dark = 0, joint_dark = 0, lit = 0;
+    for (int k = 0; k < 400; ++k) {
+      const Vec3d p{grid(random) / 64.0, grid(random) / 64.0, 0};
+      const Point2 q = face.frame.to_frame(to_exact(p));
+      const double e = solver.light_at(0, p, {0, 0, 1});
+      if (exact.curved->contains(q)) {
+        BOOST_TEST(e == 0.0, "E at " << p[0] << " " << p[1]);
+        ++dark;
+        joint_dark += test::side_of(straight.umbra, q) == CGAL::ON_UNBOUNDED_SIDE;
+      } else if (exact.curved->in_penumbra(q)) {
+        BOOST_TEST(e > 0.0, "E at " << p[0] << " " << p[1]);
+        ++lit;
+      }
+    }
+    BOOST_TEST(joint_dark > 0);
+    BOOST_TEST(lit > 0);
+    BOOST_TEST_MESSAGE(dark << " points in the umbra (" << joint_dark << " in joint parts), " << lit
+                            << " in the penumbra");
   }
   BOOST_TEST(curved == 1);
 }
