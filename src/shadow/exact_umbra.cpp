@@ -23,6 +23,7 @@
 #include <stdexcept>
 
 #include "blocked_interval.h"
+#include "blocked_interval_filter.h"
 #include "pencil.h"
 #include "penumbra/base/gauss_legendre.h"
 #include "penumbra/shadow/linear_face_shadow.h"
@@ -105,6 +106,10 @@ Rational rational_between(const Algebraic& low, const Algebraic& high) {
 
 double approximate(const Algebraic& x) {
   return CGAL::to_double(x);
+}
+
+Interval rational_interval(const Rational& x) {
+  return Interval(CGAL::to_interval(x));
 }
 
 RationalPoint2 rational_point(const Point2& p) {
@@ -231,6 +236,7 @@ class Sweep {
       : impl_(impl), face_(face), q1_(q1), q2_(q2) {
     for (const UmbraOccluder& occluder : occluders) {
       solids_.push_back(detail::rational_solid(*occluder.solid));
+      filters_.push_back(detail::interval_solid(solids_.back()));
       std::vector<RationalPoint2> ring;
       for (const Point2& p : occluder.shadow) ring.push_back(rational_point(p));
       shadows_.push_back(std::move(ring));
@@ -401,9 +407,58 @@ class Sweep {
     if (std::any_of(umbrae_.begin(), umbrae_.end(),
                     [&](const auto& umbra) { return in_ring(umbra, p); }))
       return kUmbra;
-    if (!shared(p) || !detail::covers_source(blocked(p))) return kPenumbra;
+    if (!shared(p) || !covered(p)) return kPenumbra;
     impl_.joint = true;
     return kUmbra;
+  }
+
+  // true when the occluders' blocked intervals at p cover the source: certified by the
+  // interval filter when it can, else exact.
+  bool covered(const RationalPoint2& p) const {
+    const RationalPoint3 x = world(p);
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      const IntervalPoint at{rational_interval(x.x()), rational_interval(x.y()),
+                             rational_interval(x.z())};
+      std::vector<detail::BlockedBounds> bounds(solids_.size());
+      bool certain = true;
+      for (std::size_t k = 0; k < solids_.size() && certain; ++k) {
+        if (!in_ring(shadows_[k], p)) continue;
+        const auto b = detail::blocked_bounds(filters_[k], at, q1i_, q2i_);
+        if (b)
+          bounds[k] = *b;
+        else
+          certain = false;
+      }
+      if (certain)
+        if (const auto covers = detail::covers_source(bounds)) return *covers;
+    }
+    return detail::covers_source(blocked(p));
+  }
+
+  // the kinds of the occluders' blocked intervals at p and the edges that fix their ends
+  // (the values are not needed): from the interval filter when it can, else exact.
+  std::vector<BlockedInterval> ends(const RationalPoint2& p) const {
+    const RationalPoint3 x = world(p);
+    std::vector<BlockedInterval> result(solids_.size());
+    for (std::size_t k = 0; k < solids_.size(); ++k) {
+      if (!in_ring(shadows_[k], p)) continue;
+      std::optional<detail::BlockedBounds> b;
+      {
+        CGAL::Protect_FPU_rounding<true> upward;
+        const IntervalPoint at{rational_interval(x.x()), rational_interval(x.y()),
+                               rational_interval(x.z())};
+        b = detail::blocked_bounds(filters_[k], at, q1i_, q2i_);
+      }
+      if (b) {
+        result[k].kind = b->kind;
+        result[k].low_edge = b->low_edge;
+        result[k].high_edge = b->high_edge;
+      } else {
+        result[k] = detail::blocked_interval(solids_[k], x, q1_, q2_);
+      }
+    }
+    return result;
   }
 
   // the occluders' blocked intervals at p; outside an occluder's whole shadow it hides
@@ -472,7 +527,7 @@ class Sweep {
       }
       const RationalPoint2 p = pencil.point(middle, r);
       if (!in_ring(impl_.face, p) || !shared(p)) continue;
-      const std::vector<BlockedInterval> intervals = blocked(p);
+      const std::vector<BlockedInterval> intervals = ends(p);
       Portion portion;
       portion.bottom = k == 0 ? -1 : ordered[k - 1].second;
       portion.top = ordered[k].second;
@@ -561,6 +616,11 @@ class Sweep {
   const Face& face_;
   RationalPoint3 q1_, q2_;
   std::vector<detail::RationalSolid> solids_;
+  std::vector<detail::IntervalSolid> filters_;
+  IntervalPoint q1i_{rational_interval(q1_.x()), rational_interval(q1_.y()),
+                     rational_interval(q1_.z())};
+  IntervalPoint q2i_{rational_interval(q2_.x()), rational_interval(q2_.y()),
+                     rational_interval(q2_.z())};
   std::vector<std::vector<RationalPoint2>> shadows_;
   std::map<std::vector<Rational>, int> known_;       // this sector's curves (register_curve)
   std::vector<std::vector<RationalPoint2>> umbrae_;  // empty: no single umbra
