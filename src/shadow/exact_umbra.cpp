@@ -9,8 +9,9 @@
 // their ends, hence the conics (t_high of one occluder = t_low of another) that can bound
 // the umbra there. Their crossings, isolated exactly by CGAL's algebraic kernel, cut the
 // slab into columns in which no two curves cross, and each cell of a column (between two
-// consecutive curves) is labelled at a rational point by the exact union of the blocked
-// intervals.
+// consecutive curves) is labelled lit, penumbra or umbra at a rational point: by the
+// straight single shadows and umbrae, and inside the region W where occluders may hide the
+// source together by the union of the blocked intervals (interval filter, then exact).
 
 #include <CGAL/Algebraic_kernel_d_1.h>
 #include <CGAL/CORE_BigInt.h>
