@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <map>
 
+#include "penumbra/geometry/interval.h"
+
 namespace penumbra::detail {
 namespace {
-
-Rational value(const RationalPlane3& plane, const RationalPoint3& p) {
-  return plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d();
-}
 
 // clips the convex polygon to the closed half-space plane <= 0 (Sutherland-Hodgman).
 std::vector<RationalPoint3> clip(const std::vector<RationalPoint3>& polygon,
@@ -18,7 +16,7 @@ std::vector<RationalPoint3> clip(const std::vector<RationalPoint3>& polygon,
   for (std::size_t k = 0; k < n; ++k) {
     const RationalPoint3& a = polygon[k];
     const RationalPoint3& b = polygon[(k + 1) % n];
-    const Rational fa = value(plane, a), fb = value(plane, b);
+    const Rational fa = plane_value(plane, a), fb = plane_value(plane, b);
     if (!CGAL::is_positive(fa)) kept.push_back(a);
     if ((CGAL::is_negative(fa) && CGAL::is_positive(fb)) ||
         (CGAL::is_positive(fa) && CGAL::is_negative(fb)))
@@ -84,7 +82,7 @@ BlockedInterval blocked_interval(const RationalSolid& solid, const RationalPoint
   // P in the closed solid: the directions into it (every plane through P negative) hide.
   bool inside = true, on_boundary = false;
   for (const RationalPlane3& plane : solid.planes) {
-    const Rational f = value(plane, p);
+    const Rational f = plane_value(plane, p);
     if (CGAL::is_positive(f)) inside = false;
     if (CGAL::is_zero(f)) on_boundary = true;
   }
@@ -98,9 +96,9 @@ BlockedInterval blocked_interval(const RationalSolid& solid, const RationalPoint
     // On the boundary: the directions strictly into every face through P hide.
     Rational low = 0, high = 1;
     for (const RationalPlane3& plane : solid.planes) {
-      if (!CGAL::is_zero(value(plane, p))) continue;
+      if (!CGAL::is_zero(plane_value(plane, p))) continue;
       // plane(q1 + t d) = f1 + t (f2 - f1) < 0
-      const Rational f1 = value(plane, q1), f2 = value(plane, q2);
+      const Rational f1 = plane_value(plane, q1), f2 = plane_value(plane, q2);
       if (f1 == f2) {
         if (!CGAL::is_negative(f1)) return result;
         continue;

@@ -72,6 +72,10 @@ std::optional<bool> less(const Interval& a, const Interval& b) {
 
 }  // namespace
 
+IntervalPoint interval_point(const RationalPoint3& p) {
+  return {rational_interval(p.x()), rational_interval(p.y()), rational_interval(p.z())};
+}
+
 IntervalSolid interval_solid(const RationalSolid& solid) {
   IntervalSolid result;
   const std::size_t n = solid.planes.size();

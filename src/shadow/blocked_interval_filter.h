@@ -27,6 +27,9 @@ struct IntervalSolid {
 
 IntervalSolid interval_solid(const RationalSolid& solid);
 
+// returns the interval enclosure of a rational point.
+IntervalPoint interval_point(const RationalPoint3& p);
+
 // What the filter certifies of the blocked interval: kind, the ends' edges (-1 for a
 // clamp), and enclosures of the ends (exactly 0 or 1 for a clamp).
 struct BlockedBounds {

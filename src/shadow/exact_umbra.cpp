@@ -27,6 +27,7 @@
 #include "blocked_interval_filter.h"
 #include "pencil.h"
 #include "penumbra/base/gauss_legendre.h"
+#include "penumbra/geometry/interval.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/linear_volumes.h"
 
@@ -107,10 +108,6 @@ Rational rational_between(const Algebraic& low, const Algebraic& high) {
 
 double approximate(const Algebraic& x) {
   return CGAL::to_double(x);
-}
-
-Interval rational_interval(const Rational& x) {
-  return Interval(CGAL::to_interval(x));
 }
 
 RationalPoint2 rational_point(const Point2& p) {
@@ -419,8 +416,7 @@ class Sweep {
     const RationalPoint3 x = world(p);
     {
       CGAL::Protect_FPU_rounding<true> upward;
-      const IntervalPoint at{rational_interval(x.x()), rational_interval(x.y()),
-                             rational_interval(x.z())};
+      const IntervalPoint at = detail::interval_point(x);
       std::vector<detail::BlockedBounds> bounds(solids_.size());
       bool certain = true;
       for (std::size_t k = 0; k < solids_.size() && certain; ++k) {
@@ -441,14 +437,13 @@ class Sweep {
   // (the values are not needed): from the interval filter when it can, else exact.
   std::vector<BlockedInterval> ends(const RationalPoint2& p) const {
     const RationalPoint3 x = world(p);
+    const IntervalPoint at = detail::interval_point(x);  // (to_interval rounds outward itself)
     std::vector<BlockedInterval> result(solids_.size());
     for (std::size_t k = 0; k < solids_.size(); ++k) {
       if (!in_ring(shadows_[k], p)) continue;
       std::optional<detail::BlockedBounds> b;
       {
         CGAL::Protect_FPU_rounding<true> upward;
-        const IntervalPoint at{rational_interval(x.x()), rational_interval(x.y()),
-                               rational_interval(x.z())};
         b = detail::blocked_bounds(filters_[k], at, q1i_, q2i_);
       }
       if (b) {
@@ -618,10 +613,8 @@ class Sweep {
   RationalPoint3 q1_, q2_;
   std::vector<detail::RationalSolid> solids_;
   std::vector<detail::IntervalSolid> filters_;
-  IntervalPoint q1i_{rational_interval(q1_.x()), rational_interval(q1_.y()),
-                     rational_interval(q1_.z())};
-  IntervalPoint q2i_{rational_interval(q2_.x()), rational_interval(q2_.y()),
-                     rational_interval(q2_.z())};
+  IntervalPoint q1i_ = detail::interval_point(q1_);
+  IntervalPoint q2i_ = detail::interval_point(q2_);
   std::vector<std::vector<RationalPoint2>> shadows_;
   std::map<std::vector<Rational>, int> known_;       // this sector's curves (register_curve)
   std::vector<std::vector<RationalPoint2>> umbrae_;  // empty: no single umbra
@@ -1013,10 +1006,7 @@ ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
   }
   const RationalPoint3 a = CGAL::exact(source->q1), b = CGAL::exact(source->q2);
   const RationalPlane3 plane = CGAL::exact(face.plane);
-  const auto value = [&](const RationalPoint3& p) -> Rational {
-    return plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d();
-  };
-  const Rational f1 = value(a), f2 = value(b);
+  const Rational f1 = plane_value(plane, a), f2 = plane_value(plane, b);
   if (f1 != f2) {
     // The source's line meets the face's plane at x0: four quadrants of directions.
     impl->centre = face.frame.to_frame(a + (f1 / (f1 - f2)) * (b - a));
