@@ -25,6 +25,7 @@
 
 #include "blocked_interval.h"
 #include "blocked_interval_filter.h"
+#include "convex_ring.h"
 #include "pencil.h"
 #include "penumbra/base/gauss_legendre.h"
 #include "penumbra/geometry/interval.h"
@@ -36,9 +37,11 @@ namespace {
 
 using detail::Affine2;
 using detail::BlockedInterval;
+using detail::ConvexRing;
 using detail::Pencil;
 using detail::PencilCurve;
 using detail::Poly;
+using detail::Probe;
 using detail::Quadratic2;
 using detail::RationalVector2;
 
@@ -90,14 +93,13 @@ AK::Polynomial_1 integer_polynomial(const Poly& p) {
   return AK::Polynomial_1(coefficients.begin(), coefficients.end());
 }
 
-// the real roots of p strictly between low and high, increasing.
-std::vector<Algebraic> roots_between(const Poly& p, const Algebraic& low, const Algebraic& high) {
+// the real roots of p, increasing (none for a constant or zero p).
+std::vector<Algebraic> all_roots(const Poly& p) {
   std::vector<Algebraic> result;
   if (p.degree() < 1) return result;
   std::vector<std::pair<Algebraic, AK::Multiplicity_type>> roots;
   algebraic_kernel().solve_1_object()(integer_polynomial(p), std::back_inserter(roots));
-  for (const auto& root : roots)
-    if (root.first > low && root.first < high) result.push_back(root.first);
+  for (const auto& root : roots) result.push_back(root.first);
   return result;
 }
 
@@ -130,24 +132,17 @@ Affine2 line_through(const RationalPoint2& a, const RationalPoint2& b) {
   return {a.y() - b.y(), b.x() - a.x(), a.x() * b.y() - a.y() * b.x()};
 }
 
-// true when p lies in the closed convex counter-clockwise ring.
-bool in_ring(const std::vector<RationalPoint2>& ring, const RationalPoint2& p) {
-  const std::size_t n = ring.size();
-  for (std::size_t k = 0; k < n; ++k)
-    if (CGAL::orientation(ring[k], ring[(k + 1) % n], p) == CGAL::RIGHT_TURN) return false;
-  return n >= 3;
-}
-
 // Where a line of the sweep matters (closed sets): in ring (anywhere in the face when
 // null), and also in the region W of joint occlusion when in_w.
 struct LineRole {
-  const std::vector<RationalPoint2>* ring;
+  const ConvexRing* ring;
   bool in_w;
 };
 
 struct SweepLine {
   Affine2 line;
   std::vector<LineRole> roles;
+  std::array<Interval, 3> approx;  // the enclosures of line's d, e, f
 };
 
 // What a cell of the sweep is: outside every shadow, penumbra, or umbra.
@@ -198,7 +193,7 @@ struct BoundaryPiece {
 
 struct ExactUmbra::Impl {
   bool whole = false;  // no part of the source is visible: the whole face
-  std::vector<RationalPoint2> face;
+  ConvexRing face;
   FaceFrame frame;
   std::vector<Curve> curves;
   std::vector<Sector> sectors;
@@ -214,12 +209,45 @@ struct ExactUmbra::Impl {
   // an umbra cell of the column holds or touches the point.
   bool label_at(const Column& column, const Rational& s, const Rational& r,
                 char kind = kUmbra) const {
+    return label_at(column, values_at(column, s), r, kind);
+  }
+
+  // the values at s of the column's curves (nullopt at a pole: the curve is far away).
+  std::vector<std::optional<Rational>> values_at(const Column& column, const Rational& s) const {
+    std::vector<std::optional<Rational>> values;
+    for (int id : column.curves) values.push_back(r_at(curves[id], s));
+    return values;
+  }
+
+  // the labels between consecutive breaks (increasing, distinct, holding every value) on
+  // the line s where the column's curves take the values: what label_at says there.
+  std::vector<char> labels_between(const Column& column,
+                                   const std::vector<std::optional<Rational>>& values,
+                                   const std::vector<Rational>& breaks) const {
+    std::vector<std::pair<const Rational*, std::size_t>> sorted;
+    for (std::size_t k = 0; k < values.size(); ++k)
+      if (values[k]) sorted.emplace_back(&*values[k], k);
+    std::sort(sorted.begin(), sorted.end(),
+              [](const auto& a, const auto& b) { return *a.first < *b.first; });
+    std::vector<char> result;
+    std::size_t next = 0, below = 0;
+    for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+      // every value <= breaks[k] lies below the gap, every other one above it
+      for (; next < sorted.size() && *sorted[next].first <= breaks[k]; ++next)
+        below = std::max(below, sorted[next].second + 1);
+      result.push_back(column.labels[below]);
+    }
+    return result;
+  }
+
+  // label_at with the column's curves' values at s given.
+  bool label_at(const Column& column, const std::vector<std::optional<Rational>>& values,
+                const Rational& r, char kind) const {
     std::size_t below = 0;
-    for (std::size_t k = 0; k < column.curves.size(); ++k) {
-      const auto rc = r_at(curves[column.curves[k]], s);
-      if (!rc) continue;  // at a pole the curve is far away
-      if (*rc == r) return column.labels[k] == kind || column.labels[k + 1] == kind;
-      if (*rc < r) below = k + 1;
+    for (std::size_t k = 0; k < values.size(); ++k) {
+      if (!values[k]) continue;
+      if (*values[k] == r) return column.labels[k] == kind || column.labels[k + 1] == kind;
+      if (*values[k] < r) below = k + 1;
     }
     return column.labels[below] == kind;
   }
@@ -237,11 +265,11 @@ class Sweep {
       filters_.push_back(detail::interval_solid(solids_.back()));
       std::vector<RationalPoint2> ring;
       for (const Point2& p : occluder.shadow) ring.push_back(rational_point(p));
-      shadows_.push_back(std::move(ring));
+      shadows_.emplace_back(std::move(ring));
       std::vector<RationalPoint2> umbra;
       if (occluder.umbra)
         for (const Point2& p : *occluder.umbra) umbra.push_back(rational_point(p));
-      umbrae_.push_back(std::move(umbra));
+      umbrae_.emplace_back(std::move(umbra));
     }
     collect_lines(occluders);
   }
@@ -265,11 +293,12 @@ class Sweep {
       line_traces.push_back(*trace.curve);
     }
     for (const Affine2& ray : rays_) add_rays(pencil.trace(ray.line()).rays);
-    for (const RationalPoint2& p : impl_.face)
+    for (const RationalPoint2& p : impl_.face.points())
       if (const auto c = pencil.coordinates(p)) seams.push_back(c->first);
     // Crossings of two lines inside the face and inside a region of each.
     for (std::size_t i = 0; i < line_curves.size(); ++i)
       for (std::size_t j = i + 1; j < line_curves.size(); ++j) {
+        if (surely_apart(lines_[line_curves[i]], lines_[line_curves[j]])) continue;
         const Affine2& a = lines_[line_curves[i]].line;
         const Affine2& b = lines_[line_curves[j]].line;
         const Rational det = a.d * b.e - a.e * b.d;
@@ -288,37 +317,45 @@ class Sweep {
 
     // Curves of the lines, registered once per sector.
     std::vector<int> line_ids;
+    std::vector<detail::IntervalCurve> line_enclosures;
     known_.clear();
-    for (std::size_t k = 0; k < line_curves.size(); ++k)
+    conics_.clear();
+    crossings_.clear();
+    for (std::size_t k = 0; k < line_curves.size(); ++k) {
       line_ids.push_back(register_curve(line_traces[k], lines_[line_curves[k]].line.line(), false));
+      line_enclosures.emplace_back(line_traces[k]);
+    }
     for (std::size_t k = 0; k + 1 < seams.size(); ++k)
-      slab(sector, seams[k], seams[k + 1], line_curves, line_ids);
+      slab(sector, seams[k], seams[k + 1], line_curves, line_ids, line_enclosures);
   }
 
  private:
   // true when p lies in two occluders' whole shadows and both ends of the source are hidden
   // from it, each by some occluder (closed sets): only there can occluders hide the whole
   // source together (the sweep's region W). Each set is bounded by lines of the sweep.
-  bool shared(const RationalPoint2& p) const {
+  bool shared(const Probe& p) const {
     int count = 0;
     for (const auto& shadow : shadows_)
-      if (in_ring(shadow, p)) ++count;
+      if (shadow.contains(p) && ++count == 2) break;
     if (count < 2) return false;
     for (const auto& hidden : end_shadows_)
-      if (std::none_of(hidden.begin(), hidden.end(), [&](const std::vector<Affine2>& volume) {
-            return !volume.empty() &&
-                   std::all_of(volume.begin(), volume.end(),
-                               [&](const Affine2& f) { return !CGAL::is_positive(f(p)); });
-          }))
+      if (std::none_of(
+              hidden.begin(), hidden.end(), [&](const std::vector<detail::FilteredAffine>& volume) {
+                return !volume.empty() && std::all_of(volume.begin(), volume.end(),
+                                                      [&](const detail::FilteredAffine& f) {
+                                                        return f.sign(p) != CGAL::POSITIVE;
+                                                      });
+              }))
         return false;
     return true;
   }
 
-  bool relevant(const SweepLine& line, const RationalPoint2& p) const {
-    if (!in_ring(impl_.face, p)) return false;
+  bool relevant(const SweepLine& line, const RationalPoint2& point) const {
+    const Probe p(point);
+    if (!impl_.face.contains(p)) return false;
     std::optional<bool> in_w;
     for (const LineRole& role : line.roles) {
-      if (role.ring && !in_ring(*role.ring, p)) continue;
+      if (role.ring && !role.ring->contains(p)) continue;
       if (!role.in_w) return true;
       if (!in_w) in_w = shared(p);
       if (*in_w) return true;
@@ -326,7 +363,38 @@ class Sweep {
     return false;
   }
 
-  void add_line(const Affine2& line, const std::vector<RationalPoint2>* ring, bool in_w) {
+  // true when the intervals show that the lines do not cross where both matter.
+  bool surely_apart(const SweepLine& a, const SweepLine& b) const {
+    CGAL::Protect_FPU_rounding<true> upward;
+    const auto& [ad, ae, af] = a.approx;
+    const auto& [bd, be, bf] = b.approx;
+    const Interval det = ad * be - ae * bd;
+    if (det.inf() <= 0 && det.sup() >= 0) return false;
+    const std::array<Interval, 2> at{(ae * bf - af * be) / det, (af * bd - ad * bf) / det};
+    return surely_irrelevant(a, at) || surely_irrelevant(b, at);
+  }
+
+  // true when the intervals show that the line (the curve enclosed) does not matter where it
+  // meets the pencil's line s (enclosed): it misses the face or every ring of its roles
+  // there, or meets it at r <= 0 around a finite centre.
+  bool surely_irrelevant(const Pencil& pencil, const SweepLine& line,
+                         const detail::IntervalCurve& curve, const Interval& s) const {
+    CGAL::Protect_FPU_rounding<true> upward;
+    const auto r = curve.r(s);
+    if (!r) return false;
+    if (pencil.finite() && r->sup() <= 0) return true;
+    return surely_irrelevant(line, detail::interval_point(pencil, s, *r));
+  }
+
+  // the same at a point enclosed by at (upward rounding).
+  bool surely_irrelevant(const SweepLine& line, const std::array<Interval, 2>& at) const {
+    if (impl_.face.maybe_contains(at) == false) return true;
+    return std::all_of(line.roles.begin(), line.roles.end(), [&](const LineRole& role) {
+      return role.ring && role.ring->maybe_contains(at) == false;
+    });
+  }
+
+  void add_line(const Affine2& line, const ConvexRing* ring, bool in_w) {
     if (CGAL::is_zero(line.d) && CGAL::is_zero(line.e)) return;
     // normalise: the first nonzero of (d, e) is 1, so equal lines compare equal.
     const Rational k = CGAL::is_zero(line.d) ? line.e : line.d;
@@ -336,30 +404,33 @@ class Sweep {
         known.roles.push_back({ring, in_w});
         return;
       }
-    lines_.push_back({unit, {{ring, in_w}}});
+    lines_.push_back({unit,
+                      {{ring, in_w}},
+                      {Interval(CGAL::to_interval(unit.d)), Interval(CGAL::to_interval(unit.e)),
+                       Interval(CGAL::to_interval(unit.f))}});
   }
 
   void collect_lines(const std::vector<UmbraOccluder>& occluders) {
     const FaceFrame& frame = face_.frame;
-    const std::size_t n = impl_.face.size();
-    for (std::size_t k = 0; k < n; ++k)
-      add_line(line_through(impl_.face[k], impl_.face[(k + 1) % n]), nullptr, false);
+    const std::vector<RationalPoint2>& face = impl_.face.points();
+    for (std::size_t k = 0; k < face.size(); ++k)
+      add_line(line_through(face[k], face[(k + 1) % face.size()]), nullptr, false);
     const Point3 q1 = from_exact<Point3>(q1_), q2 = from_exact<Point3>(q2_);
     const RationalVector3 d = q2_ - q1_;
     for (std::size_t o = 0; o < occluders.size(); ++o) {
-      const auto* region = &shadows_[o];
-      const std::size_t m = region->size();
-      for (std::size_t k = 0; k < m; ++k)
-        add_line(line_through((*region)[k], (*region)[(k + 1) % m]), region, false);
-      const auto* umbra = &umbrae_[o];
-      const std::size_t u = umbra->size();
-      for (std::size_t k = 0; k < u; ++k)
-        add_line(line_through((*umbra)[k], (*umbra)[(k + 1) % u]), umbra, false);
+      const ConvexRing* region = &shadows_[o];
+      const auto& outer = region->points();
+      for (std::size_t k = 0; k < outer.size(); ++k)
+        add_line(line_through(outer[k], outer[(k + 1) % outer.size()]), region, false);
+      const ConvexRing* umbra = &umbrae_[o];
+      const auto& inner = umbra->points();
+      for (std::size_t k = 0; k < inner.size(); ++k)
+        add_line(line_through(inner[k], inner[(k + 1) % inner.size()]), umbra, false);
       for (int end = 0; end < 2; ++end) {
-        std::vector<Affine2> volume;
+        std::vector<detail::FilteredAffine> volume;
         for (const Plane3& plane : point_shadow_volume(*occluders[o].solid, end ? q2 : q1).planes) {
-          volume.push_back(on_face(frame, CGAL::exact(plane)));
-          add_line(volume.back(), region, true);
+          volume.emplace_back(on_face(frame, CGAL::exact(plane)));
+          add_line(volume.back().exact(), region, true);
         }
         end_shadows_[end].push_back(std::move(volume));
       }
@@ -397,13 +468,14 @@ class Sweep {
   // the label of a point inside a cell (off every curve of the sweep): outside the shadows,
   // in a single umbra (the straight rings), or, where occluders may hide the source
   // together, covered by the exact union of the blocked intervals.
-  Label label_of(const RationalPoint2& p) {
-    if (!in_ring(impl_.face, p)) return kLit;
+  Label label_of(const RationalPoint2& point) {
+    const Probe p(point);
+    if (!impl_.face.contains(p)) return kLit;
     if (std::none_of(shadows_.begin(), shadows_.end(),
-                     [&](const auto& shadow) { return in_ring(shadow, p); }))
+                     [&](const ConvexRing& shadow) { return shadow.contains(p); }))
       return kLit;
     if (std::any_of(umbrae_.begin(), umbrae_.end(),
-                    [&](const auto& umbra) { return in_ring(umbra, p); }))
+                    [&](const ConvexRing& umbra) { return umbra.contains(p); }))
       return kUmbra;
     if (!shared(p) || !covered(p)) return kPenumbra;
     impl_.joint = true;
@@ -412,15 +484,15 @@ class Sweep {
 
   // true when the occluders' blocked intervals at p cover the source: certified by the
   // interval filter when it can, else exact.
-  bool covered(const RationalPoint2& p) const {
-    const RationalPoint3 x = world(p);
+  bool covered(const Probe& p) const {
+    const RationalPoint3 x = world(p.point);
     {
       CGAL::Protect_FPU_rounding<true> upward;
       const IntervalPoint at = detail::interval_point(x);
       std::vector<detail::BlockedBounds> bounds(solids_.size());
       bool certain = true;
       for (std::size_t k = 0; k < solids_.size() && certain; ++k) {
-        if (!in_ring(shadows_[k], p)) continue;
+        if (!shadows_[k].contains(p)) continue;
         const auto b = detail::blocked_bounds(filters_[k], at, q1i_, q2i_);
         if (b)
           bounds[k] = *b;
@@ -435,12 +507,12 @@ class Sweep {
 
   // the kinds of the occluders' blocked intervals at p and the edges that fix their ends
   // (the values are not needed): from the interval filter when it can, else exact.
-  std::vector<BlockedInterval> ends(const RationalPoint2& p) const {
-    const RationalPoint3 x = world(p);
+  std::vector<BlockedInterval> ends(const Probe& p) const {
+    const RationalPoint3 x = world(p.point);
     const IntervalPoint at = detail::interval_point(x);  // (to_interval rounds outward itself)
     std::vector<BlockedInterval> result(solids_.size());
     for (std::size_t k = 0; k < solids_.size(); ++k) {
-      if (!in_ring(shadows_[k], p)) continue;
+      if (!shadows_[k].contains(p)) continue;
       std::optional<detail::BlockedBounds> b;
       {
         CGAL::Protect_FPU_rounding<true> upward;
@@ -459,19 +531,61 @@ class Sweep {
 
   // the occluders' blocked intervals at p; outside an occluder's whole shadow it hides
   // nothing, without clipping.
-  std::vector<BlockedInterval> blocked(const RationalPoint2& p) const {
+  std::vector<BlockedInterval> blocked(const Probe& p) const {
     std::optional<RationalPoint3> x;
     std::vector<BlockedInterval> result(solids_.size());
     for (std::size_t k = 0; k < solids_.size(); ++k) {
-      if (!in_ring(shadows_[k], p)) continue;
-      if (!x) x = world(p);
+      if (!shadows_[k].contains(p)) continue;
+      if (!x) x = world(p.point);
       result[k] = detail::blocked_interval(solids_[k], *x, q1_, q2_);
     }
     return result;
   }
 
+  // A conic of the sweep in this sector's pencil: its curve's id (-1: none) and the roots of
+  // the pencil lines it holds.
+  struct GapConic {
+    int id = -1;
+    std::vector<Algebraic> rays;
+  };
+
+  // the conic t_high(j) = t_low(k) of the edges f of occluder j and e of occluder k in the
+  // pencil, made once per sector.
+  const GapConic& gap_conic(const Pencil& pencil, std::size_t j, int f, std::size_t k, int e) {
+    const std::array<std::size_t, 4> key{j, static_cast<std::size_t>(f), k,
+                                         static_cast<std::size_t>(e)};
+    const auto found = conics_.find(key);
+    if (found != conics_.end()) return found->second;
+    GapConic& conic = conics_[key];
+    const Quadratic2 q = gap_quadratic(j, f, k, e);
+    const detail::PencilTrace trace = pencil.trace(q);
+    if (!trace.rays.zero()) conic.rays = all_roots(trace.rays);
+    if (trace.curve) conic.id = register_curve(*trace.curve, q, true);
+    return conic;
+  }
+
+  // Where the curve a meets the curve b (an id), a pole (den = 0, b = kPole) or the centre
+  // (r = 0, b = kCentre): the real roots of the crossing polynomial, made once per sector.
+  static constexpr int kPole = -1, kCentre = -2;
+  const std::vector<Algebraic>& crossing_roots(int a, int b) {
+    const auto key = std::make_pair(a, b);
+    const auto found = crossings_.find(key);
+    if (found != crossings_.end()) return found->second;
+    const PencilCurve& c = impl_.curves[a].f;
+    Poly p;
+    if (b == kPole) {
+      p = c.den;
+    } else if (b == kCentre) {
+      p = c.num;
+    } else {
+      const PencilCurve& o = impl_.curves[b].f;
+      p = c.num * o.den - o.num * c.den;
+    }
+    return crossings_[key] = all_roots(p);
+  }
+
   // the conic t_high(j) = t_low(k) of the edges f of occluder j and e of occluder k.
-  Quadratic2 gap_conic(std::size_t j, int f, std::size_t k, int e) const {
+  Quadratic2 gap_quadratic(std::size_t j, int f, std::size_t k, int e) const {
     auto parameter = [&](std::size_t o, int edge) {
       const auto& ends = solids_[o].edges[edge];
       const detail::EdgeParameter t = detail::edge_parameter(
@@ -491,12 +605,16 @@ class Sweep {
   };
 
   void slab(Sector& sector, const Rational& sa, const Rational& sb,
-            const std::vector<std::size_t>& line_curves, const std::vector<int>& line_ids) {
+            const std::vector<std::size_t>& line_curves, const std::vector<int>& line_ids,
+            const std::vector<detail::IntervalCurve>& line_enclosures) {
     const Pencil& pencil = sector.pencil;
     const Rational middle = detail::simplest_between(sa, sb);
     // The lines that matter on this slab, in increasing r.
     std::vector<std::pair<Rational, int>> ordered;
+    const Interval enclosed_middle(CGAL::to_interval(middle));
     for (std::size_t k = 0; k < line_curves.size(); ++k) {
+      if (surely_irrelevant(pencil, lines_[line_curves[k]], line_enclosures[k], enclosed_middle))
+        continue;
       const auto r = r_at(impl_.curves[line_ids[k]], middle);
       if (!r || (pencil.finite() && !CGAL::is_positive(*r))) continue;
       if (!relevant(lines_[line_curves[k]], pencil.point(middle, *r))) continue;
@@ -511,7 +629,7 @@ class Sweep {
 
     // The conics of each piece between consecutive lines.
     std::vector<Portion> portions;
-    std::vector<Poly> crossings;
+    std::vector<const std::vector<Algebraic>*> crossings;  // the roots of each
     for (std::size_t k = 0; k <= ordered.size(); ++k) {
       if (k == ordered.size()) break;  // above the last line: outside the face
       Rational r;
@@ -521,8 +639,9 @@ class Sweep {
       } else {
         r = detail::simplest_between(ordered[k - 1].first, ordered[k].first);
       }
-      const RationalPoint2 p = pencil.point(middle, r);
-      if (!in_ring(impl_.face, p) || !shared(p)) continue;
+      const RationalPoint2 point = pencil.point(middle, r);
+      const Probe p(point);
+      if (!impl_.face.contains(p) || !shared(p)) continue;
       const std::vector<BlockedInterval> intervals = ends(p);
       Portion portion;
       portion.bottom = k == 0 ? -1 : ordered[k - 1].second;
@@ -533,11 +652,10 @@ class Sweep {
               intervals[i].kind != BlockedInterval::Kind::interval)
             continue;
           if (intervals[j].high_edge < 0 || intervals[i].low_edge < 0) continue;
-          const Quadratic2 q = gap_conic(j, intervals[j].high_edge, i, intervals[i].low_edge);
-          const detail::PencilTrace trace = pencil.trace(q);
-          if (!trace.rays.zero()) crossings.push_back(trace.rays);
-          if (!trace.curve) continue;
-          portion.conics.push_back(register_curve(*trace.curve, q, true));
+          const GapConic& conic =
+              gap_conic(pencil, j, intervals[j].high_edge, i, intervals[i].low_edge);
+          if (!conic.rays.empty()) crossings.push_back(&conic.rays);
+          if (conic.id >= 0) portion.conics.push_back(conic.id);
         }
       portions.push_back(std::move(portion));
     }
@@ -545,23 +663,19 @@ class Sweep {
     // infinity.
     for (const Portion& portion : portions)
       for (std::size_t a = 0; a < portion.conics.size(); ++a) {
-        const PencilCurve& c = impl_.curves[portion.conics[a]].f;
-        crossings.push_back(c.den);
-        if (pencil.finite()) crossings.push_back(c.num);
-        for (int bound : {portion.bottom, portion.top}) {
-          if (bound < 0) continue;
-          const PencilCurve& l = impl_.curves[bound].f;
-          crossings.push_back(c.num * l.den - l.num * c.den);
-        }
-        for (std::size_t b = a + 1; b < portion.conics.size(); ++b) {
-          const PencilCurve& o = impl_.curves[portion.conics[b]].f;
-          crossings.push_back(c.num * o.den - o.num * c.den);
-        }
+        const int c = portion.conics[a];
+        crossings.push_back(&crossing_roots(c, kPole));
+        if (pencil.finite()) crossings.push_back(&crossing_roots(c, kCentre));
+        for (int bound : {portion.bottom, portion.top})
+          if (bound >= 0) crossings.push_back(&crossing_roots(c, bound));
+        for (std::size_t b = a + 1; b < portion.conics.size(); ++b)
+          crossings.push_back(&crossing_roots(c, portion.conics[b]));
       }
     const Algebraic low = algebraic(sa), high = algebraic(sb);
     std::vector<Algebraic> cuts{low, high};
-    for (const Poly& p : crossings)
-      for (const Algebraic& root : roots_between(p, low, high)) cuts.push_back(root);
+    for (const std::vector<Algebraic>* roots : crossings)
+      for (const Algebraic& root : *roots)
+        if (root > low && root < high) cuts.push_back(root);
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
 
@@ -615,14 +729,16 @@ class Sweep {
   std::vector<detail::IntervalSolid> filters_;
   IntervalPoint q1i_ = detail::interval_point(q1_);
   IntervalPoint q2i_ = detail::interval_point(q2_);
-  std::vector<std::vector<RationalPoint2>> shadows_;
-  std::map<std::vector<Rational>, int> known_;       // this sector's curves (register_curve)
-  std::vector<std::vector<RationalPoint2>> umbrae_;  // empty: no single umbra
+  std::vector<ConvexRing> shadows_;
+  std::map<std::vector<Rational>, int> known_;             // this sector's curves (register_curve)
+  std::map<std::array<std::size_t, 4>, GapConic> conics_;  // (gap_conic)
+  std::map<std::pair<int, int>, std::vector<Algebraic>> crossings_;  // (crossing_roots)
+  std::vector<ConvexRing> umbrae_;                                   // empty: no single umbra
   std::vector<SweepLine> lines_;
   std::vector<Affine2> rays_;
   // per end of the source, per occluder: its point shadow volume's planes on the face (the
   // points hiding that end are those where every one is <= 0; none: it hides nothing).
-  std::array<std::vector<std::vector<Affine2>>, 2> end_shadows_;
+  std::array<std::vector<std::vector<detail::FilteredAffine>>, 2> end_shadows_;
 };
 
 // The world length of a frame displacement (the frame's axes are orthogonal).
@@ -719,19 +835,23 @@ void trace_boundary(const ExactUmbra::Impl& impl, int sector_index, double toler
   auto seam = [&](const Column* before, const Column* after, const Rational& s,
                   const Rational& s_after) {
     std::vector<Rational> breaks;
-    for (const Column* column : {before, after}) {
+    std::vector<std::optional<Rational>> values[2];
+    for (int side = 0; side < 2; ++side) {
+      const Column* column = side == 0 ? before : after;
       if (!column) continue;
-      for (int id : column->curves)
-        if (const auto r = r_at(impl.curves[id], column == before ? s : s_after))
-          breaks.push_back(*r);
+      values[side] = impl.values_at(*column, side == 0 ? s : s_after);
+      for (const auto& r : values[side])
+        if (r) breaks.push_back(*r);
     }
     if (pencil.finite()) breaks.push_back(0);
     std::sort(breaks.begin(), breaks.end());
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+    std::vector<char> labels[2];
+    if (before) labels[0] = impl.labels_between(*before, values[0], breaks);
+    if (after) labels[1] = impl.labels_between(*after, values[1], breaks);
     for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
-      const Rational r = (breaks[k] + breaks[k + 1]) / 2;
-      const bool left = before && impl.label_at(*before, s, r, kind);
-      const bool right = after && impl.label_at(*after, s_after, r, kind);
+      const bool left = before && labels[0][k] == kind;
+      const bool right = after && labels[1][k] == kind;
       if (left == right) continue;
       BoundaryPiece piece;
       // the pencil line through pencil.point(s, r): two of its points make the line.
@@ -826,6 +946,11 @@ std::vector<CurvedPolygon> chain(const ExactUmbra::Impl& impl, std::vector<Bound
   std::vector<CurvedRing> rings;
   std::vector<bool> used(pieces.size(), false);
   const double near = 1e-6 * scale;
+  // the pieces by the abscissa of their start, to find the candidates near a point
+  std::vector<std::pair<double, std::size_t>> starts;
+  for (std::size_t j = 0; j < pieces.size(); ++j)
+    starts.emplace_back(pieces[j].arc.points.front()[0], j);
+  std::sort(starts.begin(), starts.end());
   for (std::size_t first = 0; first < pieces.size(); ++first) {
     if (used[first]) continue;
     CurvedRing ring;
@@ -839,8 +964,11 @@ std::vector<CurvedPolygon> chain(const ExactUmbra::Impl& impl, std::vector<Bound
       if (!arc.straight) ring.arcs.push_back({from, ring.points.size() - 1, arc.curve, arc.joint});
       const std::array<double, 2>& tail = arc.points.back();
       std::optional<std::size_t> following;
-      for (std::size_t j = 0; j < pieces.size() && !following; ++j) {
-        if (used[j] && j != first) continue;
+      for (auto candidate = std::lower_bound(starts.begin(), starts.end(),
+                                             std::make_pair(tail[0] - near, std::size_t(0)));
+           candidate != starts.end() && candidate->first <= tail[0] + near; ++candidate) {
+        const std::size_t j = candidate->second;  // (the first piece in order that fits)
+        if ((used[j] && j != first) || (following && *following < j)) continue;
         const std::array<double, 2>& head = pieces[j].arc.points.front();
         if (std::abs(head[0] - tail[0]) > near || std::abs(head[1] - tail[1]) > near) continue;
         if (same_point(impl, pieces[k].end, pieces[j].start)) following = j;
@@ -890,6 +1018,23 @@ std::vector<CurvedPolygon> chain(const ExactUmbra::Impl& impl, std::vector<Bound
   return polygons;
 }
 
+// A curve of the sweep in doubles around s = c: r(c + t) for small t.
+struct ShiftedCurve {
+  ShiftedCurve(const PencilCurve& f, const Rational& c) {
+    for (const Rational& x : f.num.shifted(c).c) num.push_back(CGAL::to_double(x));
+    for (const Rational& x : f.den.shifted(c).c) den.push_back(CGAL::to_double(x));
+  }
+  double r(double t) const {
+    const auto horner = [&](const std::vector<double>& p) {
+      double value = 0;
+      for (auto k = p.rbegin(); k != p.rend(); ++k) value = value * t + *k;
+      return value;
+    };
+    return -horner(num) / horner(den);
+  }
+  std::vector<double> num, den;
+};
+
 // the umbra's area in one sector: per column, the integral over s of the cells' extent
 // (adaptive Gauss-Legendre; scale: the face's area, for the absolute tolerance).
 double sector_area(const ExactUmbra::Impl& impl, const Sector& sector, double scale, char kind) {
@@ -899,15 +1044,29 @@ double sector_area(const ExactUmbra::Impl& impl, const Sector& sector, double sc
   for (const Column& column : sector.columns) {
     if (std::none_of(column.labels.begin(), column.labels.end(), [&](char l) { return l == kind; }))
       continue;
-    const auto extent = [&](double s) {
+    // Consecutive cells of the kind make one run between the curves below and above it
+    // (-1: r = 0).
+    std::vector<std::pair<int, int>> runs;
+    for (std::size_t k = 0; k < column.labels.size(); ++k) {
+      if (column.labels[k] != kind) continue;
+      const int top = column.curves[k];
+      if (k > 0 && column.labels[k - 1] == kind)
+        runs.back().second = top;
+      else
+        runs.emplace_back(k == 0 ? -1 : column.curves[k - 1], top);
+    }
+    // The curves in t = s - c around the column's sample c, expanded exactly: far from s = 0
+    // their values in s lose the digits the quadrature needs.
+    const Rational& c = column.sample;
+    std::vector<std::pair<std::optional<ShiftedCurve>, ShiftedCurve>> shifted;
+    for (const auto& [bottom, top] : runs)
+      shifted.emplace_back(
+          bottom < 0 ? std::nullopt : std::optional(ShiftedCurve(impl.curves[bottom].f, c)),
+          ShiftedCurve(impl.curves[top].f, c));
+    const auto extent = [&](double t) {
       double sum = 0;
       auto f = [&](double r) { return pencil.finite() ? r * r / 2 : r; };
-      for (std::size_t k = 0; k < column.labels.size(); ++k) {
-        if (column.labels[k] != kind) continue;
-        const double bottom = k == 0 ? 0 : impl.curves[column.curves[k - 1]].f.r(s);
-        const double top = impl.curves[column.curves[k]].f.r(s);
-        sum += f(top) - f(bottom);
-      }
+      for (const auto& [bottom, top] : shifted) sum += f(top.r(t)) - (bottom ? f(bottom->r(t)) : 0);
       return sum;
     };
     const auto integrate = [&](double a, double b) {
@@ -924,7 +1083,8 @@ double sector_area(const ExactUmbra::Impl& impl, const Sector& sector, double sc
       if (depth >= 24 || std::abs(sum - whole) <= 1e-13 * std::abs(sum) + 1e-16 * scale) return sum;
       return adapt(a, m, left, depth + 1) + adapt(m, b, right, depth + 1);
     };
-    const double a = approximate(column.low), b = approximate(column.high);
+    const double a = approximate(column.low) - CGAL::to_double(c),
+                 b = approximate(column.high) - CGAL::to_double(c);
     total += adapt(a, b, integrate(a, b), 0);
   }
   return total * pencil.jacobian();
@@ -937,7 +1097,7 @@ namespace {
 // true when p lies in the closure of the cells of the kind.
 bool in_cells(const ExactUmbra::Impl& impl, const Point2& point, char kind) {
   const RationalPoint2 p = rational_point(point);
-  if (!in_ring(impl.face, p)) return false;
+  if (!impl.face.contains(p)) return false;
   if (impl.whole) return kind == kUmbra;
   if (impl.centre && p == *impl.centre) return kind == kUmbra && impl.centre_label;
   for (const Sector& sector : impl.sectors) {
@@ -996,7 +1156,9 @@ std::size_t ExactUmbra::cells() const {
 ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
                        const std::vector<UmbraOccluder>& occluders, double tolerance) {
   auto impl = std::make_shared<ExactUmbra::Impl>();
-  for (const Point2& p : face.ring) impl->face.push_back(rational_point(p));
+  std::vector<RationalPoint2> ring;
+  for (const Point2& p : face.ring) ring.push_back(rational_point(p));
+  impl->face = ConvexRing(std::move(ring));
   impl->frame = face.frame;
   const auto source = visible_source(face, q1, q2);
   if (!source) {
@@ -1020,7 +1182,7 @@ ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
     const RationalVector2 delta((d * u) / (u * u), (d * v) / (v * v));
     const Pencil probe = Pencil::parallel(delta, 0, 0);
     std::optional<Rational> low, high;
-    for (const RationalPoint2& p : impl->face) {
+    for (const RationalPoint2& p : impl->face.points()) {
       const Rational s = probe.coordinates(p)->first;
       if (!low || s < *low) low = s;
       if (!high || s > *high) high = s;
@@ -1029,7 +1191,7 @@ ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
   }
   Sweep sweep(*impl, face, a, b, occluders);
   for (Sector& sector : impl->sectors) sweep.run(sector);
-  if (impl->centre && in_ring(impl->face, *impl->centre)) {
+  if (impl->centre && impl->face.contains(*impl->centre)) {
     for (const Sector& sector : impl->sectors)
       for (const Column& column : sector.columns)
         impl->centre_label |= column.labels.front() == kUmbra;
@@ -1047,7 +1209,7 @@ ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
   for (const BoundaryPiece& piece : umbra_pieces) impl->boundary.push_back(piece.arc);
   for (const BoundaryPiece& piece : penumbra_pieces) impl->penumbra_boundary.push_back(piece.arc);
   double size = 0;  // the face's extent in frame units, for the chaining's candidates
-  for (const RationalPoint2& p : impl->face)
+  for (const RationalPoint2& p : impl->face.points())
     size = std::max({size, std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y()))});
   impl->umbra_polygons = chain(*impl, std::move(umbra_pieces), size);
   impl->penumbra_polygons = chain(*impl, std::move(penumbra_pieces), size);

@@ -142,6 +142,7 @@ Pencil Pencil::cone(const RationalPoint2& x0, const RationalVector2& a, const Ra
   // dP/dr x dP/ds = r (a x b): when positive, increasing s turns left of the ray, so the
   // ray's far side (larger r) is on the right of the direction of increasing s.
   pencil.r_side_ = CGAL::is_positive(det) ? -1 : 1;
+  pencil.enclose();
   return pencil;
 }
 
@@ -160,7 +161,40 @@ Pencil Pencil::parallel(const RationalVector2& delta, const Rational& s_low,
   const Rational det = cross(delta, n);  // = |delta|^2 > 0
   pencil.jacobian_ = CGAL::to_double(det);
   pencil.r_side_ = -1;
+  pencil.enclose();
   return pencil;
+}
+
+Poly Poly::shifted(const Rational& shift) const {
+  // Taylor's shift by repeated synthetic division by (s - shift).
+  std::vector<Rational> q = c;
+  const std::size_t n = q.size();
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    for (std::size_t i = n - 1; i > k; --i) q[i - 1] += shift * q[i];
+  return Poly(std::move(q));
+}
+
+IntervalCurve::IntervalCurve(const PencilCurve& curve) {
+  for (const Rational& c : curve.num.c) num.emplace_back(CGAL::to_interval(c));
+  for (const Rational& c : curve.den.c) den.emplace_back(CGAL::to_interval(c));
+}
+
+std::optional<Interval> IntervalCurve::r(const Interval& s) const {
+  const auto horner = [&](const std::vector<Interval>& c) {
+    Interval value = 0;
+    for (auto k = c.rbegin(); k != c.rend(); ++k) value = value * s + *k;
+    return value;
+  };
+  const Interval d = horner(den);
+  if (d.inf() <= 0 && d.sup() >= 0) return std::nullopt;
+  return -horner(num) / d;
+}
+
+void Pencil::enclose() {
+  const RationalVector2* vectors[4] = {&a0_, &a1_, &b0_, &b1_};
+  for (int k = 0; k < 4; ++k)
+    enclosures_[k] = {Interval(CGAL::to_interval(vectors[k]->x())),
+                      Interval(CGAL::to_interval(vectors[k]->y()))};
 }
 
 RationalPoint2 Pencil::point(const Rational& s, const Rational& r) const {

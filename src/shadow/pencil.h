@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "penumbra/geometry/exact.h"
+#include "penumbra/geometry/interval.h"
 
 namespace penumbra::detail {
 
@@ -34,6 +35,8 @@ struct Poly {
   Poly operator-(const Poly& o) const;
   Poly operator*(const Poly& o) const;
   Poly operator*(const Rational& k) const;
+  // returns q(t) = p(c + t), exactly.
+  Poly shifted(const Rational& c) const;
 };
 
 // returns the monic greatest common divisor of p and q (zero when both are).
@@ -71,6 +74,14 @@ struct PencilCurve {
   double r(double s) const { return -num(s) / den(s); }
 };
 
+// The enclosure of a curve of the sweep, for interval filters (upward rounding).
+struct IntervalCurve {
+  explicit IntervalCurve(const PencilCurve& curve);
+  // the enclosure of r(s); nullopt when den's enclosure holds 0.
+  std::optional<Interval> r(const Interval& s) const;
+  std::vector<Interval> num, den;
+};
+
 // What a line or conic is in pencil coordinates: a curve met once per line of the pencil,
 // or lines of the pencil themselves (their s are the roots of rays), or nothing.
 struct PencilTrace {
@@ -98,6 +109,8 @@ class Pencil {
   // returns what the line or conic q = 0 is in this pencil's coordinates. Throws
   // std::logic_error for a conic that misses x0 (no conic of exact_umbra does).
   PencilTrace trace(const Quadratic2& q) const;
+  // the enclosures of A's and B's coefficients a0, a1, b0, b1 (for interval filters).
+  const std::array<std::array<Interval, 2>, 4>& enclosures() const { return enclosures_; }
   // the area element: dA = jacobian * r dr ds (cone) or jacobian * dr ds (parallel).
   double jacobian() const { return jacobian_; }
   // +1 when larger r lies to the left of the direction of increasing s, -1 otherwise.
@@ -105,7 +118,10 @@ class Pencil {
 
  private:
   bool finite_ = true;
+  void enclose();
+
   RationalVector2 a0_, a1_, b0_, b1_;  // A(s) = a0 + s a1, B(s) = b0 + s b1
+  std::array<std::array<Interval, 2>, 4> enclosures_;
   RationalPoint2 origin_;
   Rational s_low_ = 0, s_high_ = 1;
   double jacobian_ = 1;

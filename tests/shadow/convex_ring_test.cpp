@@ -1,0 +1,154 @@
+// The interval filters of the joint-umbra sweep (src/shadow/convex_ring.h, pencil.h)
+// against the exact answers they stand in front of: CGAL's exact bounded_side for points
+// in convex rings, the sign of an affine function evaluated in rationals, Taylor's shift
+// against evaluation at c + t, and enclosures that must hold the exact value. The points
+// include those the intervals cannot decide (on edges and lines, 1e-30 away from them).
+
+#include <boost/test/unit_test.hpp>
+
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <cmath>
+#include <random>
+
+#include "convex_ring.h"
+#include "pencil.h"
+
+using namespace penumbra;
+using detail::Affine2;
+using detail::ConvexRing;
+using detail::FilteredAffine;
+using detail::Poly;
+using detail::Probe;
+using detail::RationalVector2;
+
+namespace {
+
+// a convex counter-clockwise hexagon at full-double coordinates (cos and sin of angles).
+std::vector<RationalPoint2> hexagon(double cx, double cy, double radius, double turn) {
+  std::vector<RationalPoint2> ring;
+  for (int k = 0; k < 6; ++k) {
+    const double angle = turn + k * M_PI / 3;
+    ring.emplace_back(cx + radius * std::cos(angle), cy + radius * std::sin(angle));
+  }
+  return ring;
+}
+
+// a / b in lowest terms (gmpxx's two-argument constructor does not reduce).
+Rational ratio(long a, long b) {
+  return Rational(a) / Rational(b);
+}
+
+bool encloses(const Interval& box, const Rational& x) {
+  return Rational(box.inf()) <= x && x <= Rational(box.sup());
+}
+
+// random rational points: uniform in a box, vertices, points on edges, and points a hair
+// (1e-30) off an edge on either side.
+std::vector<RationalPoint2> probes(const std::vector<RationalPoint2>& ring, std::mt19937& rng) {
+  std::uniform_real_distribution<double> coordinate(-12, 12);
+  std::uniform_int_distribution<int> fraction(1, 999);
+  std::vector<RationalPoint2> points;
+  for (int k = 0; k < 300; ++k) points.emplace_back(coordinate(rng), coordinate(rng));
+  const Rational hair = Rational(1) / Rational(mpz_class("1000000000000000000000000000000"));
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const RationalPoint2& a = ring[k];
+    const RationalPoint2& b = ring[(k + 1) % ring.size()];
+    points.push_back(a);
+    const Rational t = ratio(fraction(rng), 1000);
+    const RationalPoint2 on = a + t * (b - a);
+    points.push_back(on);
+    const RationalVector2 normal(b.y() - a.y(), a.x() - b.x());  // points outward
+    points.push_back(on + hair * normal);
+    points.push_back(on - hair * normal);
+  }
+  return points;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(interval_filters)
+
+BOOST_AUTO_TEST_CASE(ring_membership_agrees_with_exact_bounded_side) {
+  std::mt19937 rng(1729);
+  int undecided = 0, checked = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    std::uniform_real_distribution<double> centre(-4, 4), radius(1, 8), turn(0, 1);
+    const auto points = hexagon(centre(rng), centre(rng), radius(rng), turn(rng));
+    const ConvexRing ring(points);
+    for (const RationalPoint2& p : probes(points, rng)) {
+      const bool exact = CGAL::bounded_side_2(points.begin(), points.end(), p, ExactKernel()) !=
+                         CGAL::ON_UNBOUNDED_SIDE;
+      BOOST_TEST(ring.contains(p) == exact);
+      const Probe probe(p);
+      CGAL::Protect_FPU_rounding<true> upward;
+      const auto maybe = ring.maybe_contains(probe.at);
+      if (maybe)
+        BOOST_TEST(*maybe == exact);
+      else
+        ++undecided;
+      ++checked;
+    }
+  }
+  // the points on and a hair off the edges are the ones intervals cannot settle
+  BOOST_TEST(undecided > 0);
+  BOOST_TEST(undecided < checked / 2);
+  BOOST_TEST(!ConvexRing({{0, 0}, {1, 1}}).contains(RationalPoint2(0, 0)));  // fewer than 3
+}
+
+BOOST_AUTO_TEST_CASE(affine_sign_agrees_with_rationals) {
+  std::mt19937 rng(31337);
+  std::uniform_real_distribution<double> coefficient(-3, 3);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Affine2 f{coefficient(rng), coefficient(rng), coefficient(rng)};
+    const FilteredAffine filtered(f);
+    // points on the line (x chosen, y solved exactly) and off it
+    const Rational x = coefficient(rng);
+    const RationalPoint2 on(x, -(f.d * x + f.f) / f.e);
+    const RationalPoint2 off(coefficient(rng), coefficient(rng));
+    for (const RationalPoint2& p : {on, off})
+      BOOST_TEST(filtered.sign(Probe(p)) == CGAL::sign(f(p)));
+    BOOST_TEST(filtered.sign(Probe(on)) == CGAL::ZERO);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(taylor_shift_is_evaluation_at_c_plus_t) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> integer(-50, 50);
+  for (int trial = 0; trial < 100; ++trial) {
+    std::vector<Rational> c;
+    for (int k = 0, n = 1 + trial % 4; k < n; ++k) c.push_back(ratio(integer(rng), 7));
+    const Poly p(c);
+    const Rational shift = ratio(integer(rng) * 1000003L, 13), t = ratio(integer(rng), 11);
+    BOOST_TEST(p.shifted(shift)(t) == p(shift + t));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(enclosures_hold_the_exact_values) {
+  std::mt19937 rng(99);
+  std::uniform_int_distribution<int> integer(-40, 40);
+  const auto pencil = detail::Pencil::cone(RationalPoint2(ratio(1, 3), ratio(-2, 7)),
+                                           RationalVector2(1, 0), RationalVector2(0, 1));
+  for (int trial = 0; trial < 100; ++trial) {
+    const detail::PencilCurve curve{Poly({ratio(integer(rng), 3), ratio(integer(rng), 5)}),
+                                    Poly({ratio(1 + trial, 7), ratio(integer(rng), 9)})};
+    const Rational s = ratio(trial + 1, 101);
+    const Rational den = curve.den(s);
+    CGAL::Protect_FPU_rounding<true> upward;
+    const Interval enclosed_s(CGAL::to_interval(s));
+    const auto r = detail::IntervalCurve(curve).r(enclosed_s);
+    if (CGAL::is_zero(den)) {
+      BOOST_TEST(!r);
+      continue;
+    }
+    BOOST_REQUIRE(r);
+    const Rational exact_r = curve.r(s);
+    BOOST_TEST(encloses(*r, exact_r));
+    const auto at = detail::interval_point(pencil, enclosed_s, *r);
+    const RationalPoint2 exact_point = pencil.point(s, exact_r);
+    BOOST_TEST(encloses(at[0], exact_point.x()));
+    BOOST_TEST(encloses(at[1], exact_point.y()));
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
