@@ -160,7 +160,7 @@ void emit_curved_region(JsonEmitter& out, const std::vector<CurvedPolygon>& poly
   const FaceFrame& frame = face.face.frame;
   out.begin_object();
   out.key("area");
-  out.number(frame_area * std::sqrt(rounded(frame.squared_u()) * rounded(frame.squared_v())));
+  out.number(world_area(frame_area, frame));
   // the frame of the conics, exactly: a point is origin + s u + t v (u, v not unit).
   out.key("axes");
   out.begin_object();

@@ -1,5 +1,6 @@
 #include "penumbra/base/csv.h"
 #include "penumbra/io/shadow_drawing.h"
+#include "penumbra/shadow/exact_umbra.h"
 
 namespace penumbra::io {
 
@@ -38,6 +39,9 @@ void ShadowCsvWriter::faces(const ShadowFaceBlock& block) {
       csv.text(names);
       if (shadow.beyond_range)
         csv.blank().blank();
+      else if (shadow.curved)  // the exact umbra with joint parts (--joint-umbrae)
+        csv.number(world_area(shadow.curved->area(), face.frame))
+            .number(world_area(shadow.curved->penumbra_area(), face.frame));
       else
         csv.number(world_area(shadow.linear ? shadow.umbra : shadow.shadow, face.frame))
             .number(shadow.linear ? world_area(shadow.penumbra, face.frame) : 0.0);

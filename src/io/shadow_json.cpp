@@ -77,10 +77,14 @@ std::string format_json(const json& document) {
   return out + "\n";
 }
 
-double world_area(const Exact& area, const FaceFrame& frame) {
+double world_area(double frame_area, const FaceFrame& frame) {
   const double uu = rounded(frame.squared_u());
   const double vv = rounded(frame.squared_v());
-  return rounded(area) * std::sqrt(uu * vv);
+  return frame_area * std::sqrt(uu * vv);
+}
+
+double world_area(const Exact& area, const FaceFrame& frame) {
+  return world_area(rounded(area), frame);
 }
 
 double world_area(const Region2& region, const FaceFrame& frame) {

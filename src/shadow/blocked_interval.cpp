@@ -1,7 +1,9 @@
 #include "blocked_interval.h"
 
 #include <algorithm>
+#include <iterator>
 #include <map>
+#include <optional>
 
 #include "penumbra/geometry/interval.h"
 
@@ -33,12 +35,47 @@ Rational parameter_through(const RationalPoint3& p, const RationalPoint3& x,
   return -(CGAL::cross_product(w, q1 - p) * m) / (m * m);
 }
 
-// the edge of solid whose closed segment holds x, or -1.
+Interval enclosure(const Rational& x) {
+  return Interval(CGAL::to_interval(x));
+}
+
+IntervalPoint enclosure(const RationalPoint3& p) {
+  return {enclosure(p.x()), enclosure(p.y()), enclosure(p.z())};
+}
+
+// The sign of a plane at a point when its enclosure certifies it (upward rounding).
+std::optional<CGAL::Sign> certified_sign(const std::array<Interval, 4>& plane,
+                                         const IntervalPoint& x) {
+  const Interval f = plane[0] * x[0] + plane[1] * x[1] + plane[2] * x[2] + plane[3];
+  if (f.inf() > 0) return CGAL::POSITIVE;
+  if (f.sup() < 0) return CGAL::NEGATIVE;
+  return std::nullopt;
+}
+
+// the sign of plane at x: filtered, then exact.
+CGAL::Sign plane_sign(const RationalPlane3& plane, const std::array<Interval, 4>& approx,
+                      const RationalPoint3& x, const IntervalPoint& at) {
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    if (const auto sign = certified_sign(approx, at)) return *sign;
+  }
+  return CGAL::sign(plane_value(plane, x));
+}
+
+// the edge of solid whose closed segment holds x, or -1 (the box of each edge first).
 int edge_holding(const RationalSolid& solid, const RationalPoint3& x) {
+  const IntervalPoint at = enclosure(x);
   for (std::size_t k = 0; k < solid.edges.size(); ++k) {
-    const RationalPoint3& a = solid.vertices[solid.edges[k][0]];
-    const RationalPoint3& b = solid.vertices[solid.edges[k][1]];
-    if (CGAL::collinear(a, b, x) && !CGAL::is_positive((x - a) * (x - b)))
+    const IntervalPoint& a = solid.approx_vertices[solid.edges[k][0]];
+    const IntervalPoint& b = solid.approx_vertices[solid.edges[k][1]];
+    bool apart = false;
+    for (int i = 0; i < 3 && !apart; ++i)
+      apart = at[i].sup() < std::min(a[i].inf(), b[i].inf()) ||
+              at[i].inf() > std::max(a[i].sup(), b[i].sup());
+    if (apart) continue;
+    const RationalPoint3& ea = solid.vertices[solid.edges[k][0]];
+    const RationalPoint3& eb = solid.vertices[solid.edges[k][1]];
+    if (CGAL::collinear(ea, eb, x) && !CGAL::is_positive((x - ea) * (x - eb)))
       return static_cast<int>(k);
   }
   return -1;
@@ -72,6 +109,10 @@ RationalSolid rational_solid(const ConvexPolyhedron& solid) {
     }
   }
   for (const auto& edge : edges) result.edges.push_back(edge.first);
+  for (const RationalPoint3& v : result.vertices) result.approx_vertices.push_back(enclosure(v));
+  for (const RationalPlane3& plane : result.planes)
+    result.approx_planes.push_back(
+        {enclosure(plane.a()), enclosure(plane.b()), enclosure(plane.c()), enclosure(plane.d())});
   return result;
 }
 
@@ -80,11 +121,12 @@ BlockedInterval blocked_interval(const RationalSolid& solid, const RationalPoint
   BlockedInterval result;
   const RationalVector3 d = q2 - q1;
   // P in the closed solid: the directions into it (every plane through P negative) hide.
+  const IntervalPoint at = enclosure(p);
   bool inside = true, on_boundary = false;
-  for (const RationalPlane3& plane : solid.planes) {
-    const Rational f = plane_value(plane, p);
-    if (CGAL::is_positive(f)) inside = false;
-    if (CGAL::is_zero(f)) on_boundary = true;
+  for (std::size_t k = 0; k < solid.planes.size(); ++k) {
+    const CGAL::Sign f = plane_sign(solid.planes[k], solid.approx_planes[k], p, at);
+    if (f == CGAL::POSITIVE) inside = false;
+    if (f == CGAL::ZERO) on_boundary = true;
   }
   if (inside && !on_boundary) {
     result.kind = BlockedInterval::Kind::full;
@@ -117,8 +159,17 @@ BlockedInterval blocked_interval(const RationalSolid& solid, const RationalPoint
     return result;
   }
   std::vector<RationalPoint3> polygon{p, q1, q2};
-  for (const RationalPlane3& plane : solid.planes) {
-    polygon = clip(polygon, plane);
+  const IntervalPoint corners[3] = {at, enclosure(q1), enclosure(q2)};
+  for (std::size_t k = 0; k < solid.planes.size(); ++k) {
+    {
+      // a plane with the whole triangle strictly inside cuts nothing
+      CGAL::Protect_FPU_rounding<true> upward;
+      if (std::all_of(std::begin(corners), std::end(corners), [&](const IntervalPoint& c) {
+            return certified_sign(solid.approx_planes[k], c) == CGAL::NEGATIVE;
+          }))
+        continue;
+    }
+    polygon = clip(polygon, solid.planes[k]);
     if (polygon.empty()) return result;
   }
   result.kind = BlockedInterval::Kind::interval;

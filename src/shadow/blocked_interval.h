@@ -12,6 +12,7 @@
 
 #include "penumbra/geometry/convex_polyhedron.h"
 #include "penumbra/geometry/exact.h"
+#include "penumbra/geometry/interval.h"
 
 namespace penumbra::detail {
 
@@ -22,6 +23,9 @@ struct RationalSolid {
   std::vector<RationalPoint3> vertices;
   std::vector<RationalPlane3> planes;
   std::vector<std::array<int, 2>> edges;
+  // the enclosures of the vertices and of the planes' coefficients (interval filters)
+  std::vector<IntervalPoint> approx_vertices;
+  std::vector<std::array<Interval, 4>> approx_planes;
 };
 
 RationalSolid rational_solid(const ConvexPolyhedron& solid);

@@ -10,12 +10,16 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 python=/usr/bin/python3
 
-for scene in every-kind shadow-cube-point shadow-shared-face linear-fig5; do
+# (the last with exact joint umbrae: curved rings drawn as densified polylines)
+for entry in every-kind shadow-cube-point shadow-shared-face linear-fig5 \
+  "linear-joint-umbra --joint-umbrae"; do
+  read -r scene flags <<<"$entry"
   file="$source_dir/fixtures/scenes/$scene.json"
   for view in top faces camera; do
     if [ "$view" = camera ] && ! grep -q '"camera"' "$file"; then continue; fi
-    "$penumbra" shadows "$file" -o "$work/$scene.json" --svg "$work/$scene-$view.svg" --view "$view" \
-      --dxf "$work/$scene.dxf" --report "$work/$scene.csv" --loops
+    # shellcheck disable=SC2086 # flags: zero or more words
+    "$penumbra" shadows "$file" $flags -o "$work/$scene.json" --svg "$work/$scene-$view.svg" \
+      --view "$view" --dxf "$work/$scene.dxf" --report "$work/$scene.csv" --loops
     xmllint --noout "$work/$scene-$view.svg"
     grep -q '<path' "$work/$scene-$view.svg"
   done
@@ -70,6 +74,12 @@ for row in rows:
     assert abs(float(row["shadow_percent"]) - 100 * shadow / face) <= 1e-9, row
     umbra, penumbra = float(row["umbra_area"]), float(row["penumbra_area"])
     assert abs(umbra + penumbra - shadow) <= 1e-9 * max(1.0, face), row
+    # the JSON's areas (curved ones with --joint-umbrae)
+    light = next(l for f in loops["faces"] if f["object"] == row["object"]
+                 and str(f["face"]) == row["face"] for l in f["lights"] if l["light"] == row["light"])
+    if light["umbra"]["polygons"] or light["penumbra"]["polygons"]:
+        assert abs(umbra - light["umbra"]["area"]) <= 1e-9 * max(1.0, face), (row, light["umbra"]["area"])
+        assert abs(penumbra - light["penumbra"]["area"]) <= 1e-9 * max(1.0, face), row
     if row["faces_away"] == "true":
         assert lit == 0, row
 print(f"{sys.argv[1]}: DXF and CSV read back: {sum(len(r) for r in found.values())} polylines, {len(rows)} rows")

@@ -113,8 +113,9 @@ std::vector<const nlohmann::json*> boundary_rings(const nlohmann::json& face);
 std::string format_json(const nlohmann::json& document);
 
 // returns the world area of a region of a face with the given frame (frame area times
-// |u| |v|), in m^2; the second form from the frame area itself.
+// |u| |v|), in m^2; the other forms from the frame area itself.
 double world_area(const Region2& region, const FaceFrame& frame);
+double world_area(double frame_area, const FaceFrame& frame);
 double world_area(const Exact& area, const FaceFrame& frame);
 
 }  // namespace penumbra::io
