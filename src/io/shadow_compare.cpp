@@ -25,6 +25,10 @@ class Comparison {
 
   // the exact rings of a region, or of an occluder ("polygon").
   json exact_region(const json& region, const std::string& path) const {
+    if (region.is_object() && region.contains("axes"))
+      throw InputError(file_, path,
+                       "a curved region (shadows --joint-umbrae): check cannot compare conic "
+                       "edges yet (docs/shadows.md)");
     json rings = json::array();
     const json& polygons = need(region, "polygons", path);
     for (std::size_t k = 0; k < polygons.size(); ++k)

@@ -71,6 +71,21 @@ BOOST_AUTO_TEST_CASE(bad_scene_reports_file_and_path_and_exits_2) {
                scene.string() + ": lights[0].linear: a linear source must not have zero length"));
 }
 
+BOOST_AUTO_TEST_CASE(check_refuses_a_curved_golden_by_name) {
+  // A golden written with --joint-umbrae has curved regions that check cannot compare yet:
+  // a clear error naming the region, exit 2, rather than a missing "exact".
+  const auto dir = penumbra::test::scratch_dir("cli-curved-golden");
+  const auto golden = dir / "joint.json";
+  const std::string scene = "fixtures/scenes/linear-joint-umbra.json";
+  BOOST_TEST_REQUIRE(
+      run_penumbra("shadows " + scene + " --joint-umbrae --exact -o '" + golden.string() + "'")
+          .status == 0);
+  const auto result = run_penumbra("check " + scene + " --golden '" + golden.string() + "'");
+  BOOST_TEST(result.status == 2);
+  BOOST_TEST(contains(result.err, golden.string() + ": faces[3].lights[0].umbra: a curved region"),
+             result.err);
+}
+
 BOOST_AUTO_TEST_CASE(sun_lists_the_day_against_the_spa_sunrise_and_sunset) {
   // Golden, Colorado, 2003-10-17 at UTC-7: the NREL SPA report's worked example (Reda and
   // Andreas 2004, appendix A.5) gives sunrise 06:12:43 and sunset 17:20:19 local time,
