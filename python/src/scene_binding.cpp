@@ -72,12 +72,6 @@ std::shared_ptr<SceneHandle> parse(const std::string& text, const std::string& f
   return std::make_shared<SceneHandle>(parse_scene(text, file));
 }
 
-const char* light_kind(const Light& light) {
-  if (std::holds_alternative<PointLight>(light.source)) return "point";
-  if (std::holds_alternative<LinearLight>(light.source)) return "linear";
-  return "directional";
-}
-
 // the owners of receiving faces (objects, and parts for the pieces of mesh faces), in the
 // canonical order of documents (by name), each with its receiving faces' count and the
 // bounding box of its objects: what a job splits into spatial tiles.
@@ -216,7 +210,7 @@ void bind_scene(py::module_& module) {
                              [](const SceneHandle& h) {
                                std::vector<std::pair<std::string, std::string>> lights;
                                for (const Light& l : h.scene().lights)
-                                 lights.emplace_back(l.name, light_kind(l));
+                                 lights.emplace_back(l.name, kind_name(l));
                                return lights;
                              })
       .def_property_readonly("suns",

@@ -47,10 +47,6 @@ nlohmann::json vec(const Vec3d& v) {
   return {v[0], v[1], v[2]};
 }
 
-const char* kind_name(LightKind kind) {
-  return kind == LightKind::point ? "point" : kind == LightKind::linear ? "linear" : "directional";
-}
-
 // Reading: every failure names the file and the field.
 class Reader {
  public:
@@ -349,6 +345,7 @@ BasisLuminances read_checked_basis(const std::filesystem::path& path) {
     const auto kind = reader.get<std::string>(member("kind"), where + ".kind");
     light.columns.kind = kind == "point"    ? LightKind::point
                          : kind == "linear" ? LightKind::linear
+                         : kind == "area"   ? LightKind::area
                                             : LightKind::directional;
     light.columns.degree = reader.get<int>(member("degree"), where + ".degree");
     light.columns.first_column =

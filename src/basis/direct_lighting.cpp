@@ -39,12 +39,27 @@ std::vector<LightColumns> light_columns(const Scene& scene,
       columns.count = sh_count(columns.degree);
     } else {
       columns.kind = std::holds_alternative<LinearLight>(light.source) ? LightKind::linear
+                     : std::holds_alternative<AreaLight>(light.source) ? LightKind::area
                                                                        : LightKind::directional;
     }
     next += columns.count;
     layout.push_back(columns);
   }
   return layout;
+}
+
+const char* kind_name(LightKind kind) {
+  switch (kind) {
+    case LightKind::point:
+      return "point";
+    case LightKind::linear:
+      return "linear";
+    case LightKind::area:
+      return "area";
+    case LightKind::directional:
+      break;
+  }
+  return "directional";
 }
 
 Eigen::MatrixXd direct_illuminance(const Scene& scene, const PatchMesh& mesh,

@@ -45,7 +45,7 @@ MeshBreaks shadow_breaks(const Scene& scene, bool parallel) {
         FaceBreaks& out = breaks[{static_cast<std::uint32_t>(receiver.object),
                                   static_cast<std::uint32_t>(receiver.face)}];
         add_region(map.shadow, face.frame, out);
-        if (map.linear) add_region(map.umbra, face.frame, out);
+        if (map.extended) add_region(map.umbra, face.frame, out);
       }
   }
   return breaks;

@@ -29,12 +29,6 @@ void print_plane(std::ostream& out, const Plane3& plane) {
   out << "]";
 }
 
-const char* light_kind(const Light& light) {
-  if (std::holds_alternative<PointLight>(light.source)) return "point";
-  if (std::holds_alternative<LinearLight>(light.source)) return "linear";
-  return "directional";
-}
-
 int run_info(const std::string& path) {
   const Scene& scene = load_scene_until_exit(path);
   for (const std::string& warning : scene.warnings)
@@ -109,7 +103,7 @@ int run_info(const std::string& path) {
   for (std::size_t k : order) std::cout << texts[k];
   std::cout << "\n";
   for (const Light& light : scene.lights) {
-    std::cout << "light " << light.name << " (" << light_kind(light) << ")";
+    std::cout << "light " << light.name << " (" << kind_name(light) << ")";
     if (const auto* point = std::get_if<PointLight>(&light.source))
       std::cout << " at [" << point->position[0] << ", " << point->position[1] << ", "
                 << point->position[2] << "], max " << point->distribution->max_intensity() << " cd";
@@ -117,6 +111,9 @@ int run_info(const std::string& path) {
       std::cout << " from [" << tube->start[0] << ", " << tube->start[1] << ", " << tube->start[2]
                 << "] to [" << tube->end[0] << ", " << tube->end[1] << ", " << tube->end[2] << "], "
                 << tube->candela_per_metre << " cd/m";
+    if (const auto* panel = std::get_if<AreaLight>(&light.source))
+      std::cout << ", " << panel->vertices.size() << " vertices, " << panel->area() << " m2, "
+                << panel->luminance << " cd/m2" << (panel->two_sided ? ", two-sided" : "");
     if (const auto* sun = std::get_if<DirectionalLight>(&light.source))
       std::cout << " toward [" << sun->direction[0] << ", " << sun->direction[1] << ", "
                 << sun->direction[2] << "], " << sun->illuminance << " lx";

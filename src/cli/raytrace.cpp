@@ -33,6 +33,7 @@ struct RaytraceArguments {
   std::string exposure = "auto";
   std::string values;
   int tube_samples = 16;
+  int area_samples = 64;
   std::string indirect = "auto";
   RadiosityArguments radiosity;
 };
@@ -68,6 +69,7 @@ int run_raytrace(RaytraceArguments& args) {
   trace.attenuation =
       args.attenuation == "linear" ? raytrace::Attenuation::linear : raytrace::Attenuation::none;
   trace.tube_samples = args.tube_samples;
+  trace.area_samples = args.area_samples;
   raytrace::RenderOptions render;
   render.anti_aliasing =
       args.aa == "none" ? raytrace::AntiAliasing::none : raytrace::AntiAliasing::adaptive;
@@ -156,6 +158,10 @@ void register_raytrace(CLI::App& app) {
           "samples of a tube's Phong highlight per shading point (its diffuse light is exact)")
       ->capture_default_str()
       ->check(CLI::Range(1, 4096));
+  verb->add_option("--area-samples", args->area_samples,
+                   "stratified shadow rays per area source and shading point")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 65536));
   verb->add_option("--values", args->values, "CSV of px,py,object,R,G,B (linear luminance)");
   add_indirect_options(verb, args->indirect, args->radiosity);
   verb->callback([args] { exit_status() = run_raytrace(*args); });

@@ -37,7 +37,12 @@ struct CachedDirectional {
   const DirectionalLight* light;
 };
 
-using CachedLight = std::variant<CachedPoint, CachedLinear, CachedDirectional>;
+struct CachedArea {
+  const AreaLight* light;
+  Box box;  // of the source
+};
+
+using CachedLight = std::variant<CachedPoint, CachedLinear, CachedDirectional, CachedArea>;
 
 // The occluders one query tests: every object (nullptr) or a caller's subset of them.
 using OccluderSubset = const std::vector<std::size_t>*;
@@ -74,6 +79,7 @@ struct IlluminanceSolver::Impl {
   using CachedPoint = detail::CachedPoint;
   using CachedLinear = detail::CachedLinear;
   using CachedDirectional = detail::CachedDirectional;
+  using CachedArea = detail::CachedArea;
   using QueryPoint = detail::QueryPoint;
   using OccluderSubset = detail::OccluderSubset;
 
@@ -95,6 +101,8 @@ struct IlluminanceSolver::Impl {
                                                                      OccluderSubset subset) const;
   double linear_light(const CachedLinear& tube, const QueryPoint& point, const Vec3d& normal,
                       OccluderSubset subset) const;
+  double area_light(const CachedArea& panel, const QueryPoint& point, const Vec3d& normal,
+                    OccluderSubset subset) const;
   double light_at(std::size_t light, const QueryPoint& point, const Vec3d& normal,
                   OccluderSubset subset) const;
   std::optional<std::size_t> containing_object(const QueryPoint& point) const;

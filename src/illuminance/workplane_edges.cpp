@@ -84,7 +84,7 @@ WorkplaneEdges workplane_shadow_edges(const Scene& scene, double height, const P
       for (const FaceShadow& map : lit.faces) {
         if (map.faces_away || map.beyond_range) continue;
         append_edges(map.shadow, face.frame, light, false, result.edges);
-        if (map.linear) append_edges(map.umbra, face.frame, light, true, result.edges);
+        if (map.extended) append_edges(map.umbra, face.frame, light, true, result.edges);
       }
   }
   return result;

@@ -43,8 +43,8 @@ void ShadowCsvWriter::faces(const ShadowFaceBlock& block) {
         csv.number(world_area(shadow.curved->area(), face.frame))
             .number(world_area(shadow.curved->penumbra_area(), face.frame));
       else
-        csv.number(world_area(shadow.linear ? shadow.umbra : shadow.shadow, face.frame))
-            .number(shadow.linear ? world_area(shadow.penumbra, face.frame) : 0.0);
+        csv.number(world_area(shadow.extended ? shadow.umbra : shadow.shadow, face.frame))
+            .number(shadow.extended ? world_area(shadow.penumbra, face.frame) : 0.0);
       csv.boolean(shadow.joint_occlusion);
       csv.end_row();
     }

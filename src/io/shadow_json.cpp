@@ -16,12 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-const char* kind_of(const Light& light) {
-  if (std::holds_alternative<PointLight>(light.source)) return "point";
-  if (std::holds_alternative<LinearLight>(light.source)) return "linear";
-  return "directional";
-}
-
 bool holds_objects(const json& node) {
   if (node.is_object()) return true;
   if (node.is_array())
@@ -103,7 +97,7 @@ json shadow_header_json(const Scene& scene, const ShadowResult& result,
   for (const LightShadows& shadows : result.lights) {
     const ShadowStats& stats = shadows.stats;
     json entry = {{"name", scene.lights[shadows.light].name},
-                  {"kind", kind_of(scene.lights[shadows.light])},
+                  {"kind", kind_name(scene.lights[shadows.light])},
                   {"faces", stats.faces},
                   {"faces_away", stats.faces_away},
                   {"beyond_range", stats.beyond_range},
@@ -219,14 +213,14 @@ void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& sha
   if (shadow.curved) {
     emit_curved_region(out, shadow.curved->penumbra_polygons(), shadow.curved->penumbra_area(),
                        face);
-  } else if (shadow.linear) {
+  } else if (shadow.extended) {
     emit_region(out, shadow.penumbra, face, exact);
   } else {  // point and directional sources: no penumbra
     emit_region(out, Region2{}, face, false);
   }
   out.key("shadow");
   emit_region(out, shadow.shadow, face, exact);
-  if (shadow.linear) {
+  if (shadow.extended) {
     out.key("source_clipped");
     out.boolean(shadow.source_clipped);
   }
@@ -234,7 +228,7 @@ void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& sha
   if (shadow.curved)
     emit_curved_region(out, shadow.curved->umbra_polygons(), shadow.curved->area(), face);
   else
-    emit_region(out, shadow.linear ? shadow.umbra : shadow.shadow, face, exact);
+    emit_region(out, shadow.extended ? shadow.umbra : shadow.shadow, face, exact);
   out.end_object();
 }
 

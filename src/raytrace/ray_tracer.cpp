@@ -7,6 +7,7 @@
 #include "penumbra/base/random.h"
 #include "penumbra/base/vec3d.h"
 #include "penumbra/photometry/orientation.h"
+#include "penumbra/raytrace/area_sampling.h"
 #include "penumbra/raytrace/optics.h"
 #include "penumbra/raytrace/tube_sampling.h"
 #include "penumbra/raytrace/tube_visibility.h"
@@ -157,6 +158,17 @@ struct RayTracer::Impl {
         if (cos_alpha <= 0) continue;
         const double passed = transmittance(origin, direction, kInfinity, counts);
         if (passed > 0) light.add(sun->illuminance * passed, cos_alpha, direction);
+      } else if (const auto* panel = std::get_if<AreaLight>(&source.source)) {
+        // Stratified shadow rays over the polygon, each element a point source.
+        const auto passed = [&](const Vec3d& position) {
+          const Vec3d to = position - point;
+          const double distance = length(to);
+          return transmittance(origin, (1 / distance) * to, distance, counts);
+        };
+        for (const SourceElement& element :
+             sample_area_stratified(*panel, point, options.area_samples, random.next(), passed))
+          from_point_light(
+              element.position, [&](const Vec3d&) { return element.candela; }, 1);
       } else if (const auto* tube = std::get_if<LinearLight>(&source.source)) {
         // Nishita 1985 section 4.2.3: the closed form over the exactly visible pieces, each
         // scaled by what transparent occluders pass (no shadow rays).

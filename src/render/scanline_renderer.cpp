@@ -94,7 +94,7 @@ struct ScanlineRenderer::Impl {
     if (map.faces_away) return;
     std::vector<Segment>& out = boundaries[face_slot];
     append_boundary(map.shadow, face.frame, out);
-    if (map.linear) append_boundary(map.umbra, face.frame, out);
+    if (map.extended) append_boundary(map.umbra, face.frame, out);
   }
 
   // Nishita 1985 section 4.2.2: the shadow, umbra (and so penumbra) boundaries of each

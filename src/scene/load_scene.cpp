@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "area_light.h"
 #include "bezier_objects.h"
 #include "json_cursor.h"
 #include "mesh_parts.h"
@@ -381,7 +382,7 @@ class SceneReader {
 
   void read_light(const JsonCursor& cursor) {
     cursor.require_object();
-    static const char* kinds[] = {"point", "linear", "directional", "sun"};
+    static const char* kinds[] = {"point", "linear", "area", "directional", "sun"};
     std::string kind;
     for (const char* k : kinds) {
       if (!cursor.has(k)) continue;
@@ -390,7 +391,7 @@ class SceneReader {
       kind = k;
     }
     if (kind.empty())
-      cursor.fail("a light needs one of \"point\", \"linear\", \"directional\", \"sun\"");
+      cursor.fail("a light needs one of \"point\", \"linear\", \"area\", \"directional\", \"sun\"");
 
     Light light;
     light.json_path = cursor.path();
@@ -409,6 +410,9 @@ class SceneReader {
       if (points[0] == points[1]) ends.fail("a linear source must not have zero length");
       light.source =
           LinearLight{points[0], points[1], cursor.at("candela_per_metre").non_negative_number()};
+    } else if (kind == "area") {
+      cursor.warn_unknown_keys({"name", "area", "luminance", "exitance", "lumens", "two_sided"});
+      light.source = detail::read_area_light(cursor);
     } else if (kind == "directional") {
       cursor.warn_unknown_keys({"name", "directional", "illuminance"});
       light.source = DirectionalLight{cursor.at("directional").direction(),
@@ -542,6 +546,13 @@ const Object* Scene::find_object(const std::string& name) const {
   for (const Object& object : objects)
     if (object.name == name) return &object;
   return nullptr;
+}
+
+const char* kind_name(const Light& light) {
+  if (std::holds_alternative<PointLight>(light.source)) return "point";
+  if (std::holds_alternative<LinearLight>(light.source)) return "linear";
+  if (std::holds_alternative<AreaLight>(light.source)) return "area";
+  return "directional";
 }
 
 const Light* Scene::find_light(const std::string& name) const {

@@ -18,18 +18,6 @@ nlohmann::json vector_json(const Vec3d& v) {
   return {v[0], v[1], v[2]};
 }
 
-const char* kind_name(basis::LightKind kind) {
-  switch (kind) {
-    case basis::LightKind::point:
-      return "point";
-    case basis::LightKind::linear:
-      return "linear";
-    case basis::LightKind::directional:
-      return "directional";
-  }
-  return "point";
-}
-
 }  // namespace
 
 std::vector<double> LampState::lighting_weights() const {
@@ -65,7 +53,7 @@ void LampState::aim_at(const Vec3d& point) {
 
 nlohmann::json describe(const LampState& lamp) {
   nlohmann::json out = {{"name", lamp.name},
-                        {"kind", kind_name(lamp.kind)},
+                        {"kind", basis::kind_name(lamp.kind)},
                         {"colour", lamp.colour},
                         {"scale", lamp.scale},
                         {"editable", lamp.editor.has_value()}};

@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "extended_face.h"
 #include "half_plane.h"
 #include "penumbra/shadow/contour.h"
 #include "penumbra/shadow/face_shadow.h"
 #include "penumbra/shadow/linear_shadow.h"
 #include "penumbra/shadow/shadow_loops.h"
 #include "receiver_clip.h"
-#include "region_set.h"
 
 namespace penumbra {
 namespace {
@@ -64,14 +64,11 @@ std::optional<VisibleSource> visible_source(const Face& face, const Point3& q1, 
 FaceShadow linear_face_shadow(const Face& face, const Point3& q1, const Point3& q2,
                               std::vector<Occluder> occluders) {
   FaceShadow result;
-  result.linear = true;
+  result.extended = true;
   const auto source = visible_source(face, q1, q2);
   if (!source) {
     // Section 4.1.2 / Fig. 7, S2: invisible from both end points; wholly unlit.
-    FaceShadow unlit = unlit_face(face);
-    unlit.linear = true;
-    unlit.umbra = unlit.shadow;
-    return unlit;
+    return detail::unlit_extended(face);
   }
   result.source_clipped = source->clipped;
 
@@ -80,10 +77,7 @@ FaceShadow linear_face_shadow(const Face& face, const Point3& q1, const Point3& 
   for (const Occluder& occluder : occluders) {
     const ConvexPolyhedron& solid = *occluder.solid;
     // Only the part of V strictly in front of the face's plane can block light.
-    if (std::none_of(solid.vertices().begin(), solid.vertices().end(), [&](const Point3& p) {
-          return face.plane.oriented_side(p) == CGAL::ON_POSITIVE_SIDE;
-        }))
-      continue;
+    if (!detail::reaches_front(solid, face)) continue;
     std::optional<SourceOcclusion> own;
     if (!occluder.whole || source->clipped) own = source_occlusion(solid, source->q1, source->q2);
     const SourceOcclusion& occlusion = own ? *own : *occluder.whole;
@@ -108,11 +102,7 @@ FaceShadow linear_face_shadow(const Face& face, const Point3& q1, const Point3& 
   }
 
   result.joint_occlusion = detail::any_interiors_overlap(shadows);
-  detail::ShadowSets sets = detail::shadow_sets(shadows, umbrae, face.ring);
-  result.shadow = std::move(sets.shadow);
-  result.umbra = std::move(sets.umbra);
-  result.penumbra = std::move(sets.penumbra);
-  result.lit = std::move(sets.lit);
+  detail::fill_sets(result, shadows, umbrae, face);
   return result;
 }
 

@@ -69,7 +69,7 @@ FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const Fac
     const FrameMap& map = maps.emplace_back(*piece_frame, frame);
     result.faces_away = result.faces_away && piece->faces_away;
     result.beyond_range = result.beyond_range && piece->beyond_range;
-    result.linear = result.linear || piece->linear;
+    result.extended = result.extended || piece->extended;
     result.source_clipped = result.source_clipped || piece->source_clipped;
     result.joint_occlusion = result.joint_occlusion || piece->joint_occlusion;
     for (const OccluderShadow& occluder : piece->occluders) {

@@ -8,6 +8,7 @@
 #include "mesh_face_shadow.h"
 #include "penumbra/base/input_error.h"
 #include "penumbra/base/parallel.h"
+#include "penumbra/shadow/area_face_shadow.h"
 #include "penumbra/shadow/exact_umbra.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/shadow_polygon.h"
@@ -57,7 +58,7 @@ class LightShading {
   // because it faces away, marks those outside the sphere of lighting, and keeps the rest
   // as the active ones to compute.
   template <class FacesAway>
-  void cull(const std::optional<LightingSphere>& sphere, bool linear, FacesAway&& away) {
+  void cull(const std::optional<LightingSphere>& sphere, bool extended, FacesAway&& away) {
     if (sphere) result_.stats.radius = sphere->radius();
     std::vector<std::size_t> far;
     for (std::size_t r = 0; r < receivers_.size(); ++r) {
@@ -81,7 +82,7 @@ class LightShading {
         continue;
       }
       result_.faces[r].beyond_range = true;
-      result_.faces[r].linear = linear;
+      result_.faces[r].extended = extended;
       ++result_.stats.beyond_range;
       far_.push_back(r);
     }
@@ -307,6 +308,48 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   return result;
 }
 
+// The same for an area source (docs/area-sources.md). No sphere of lighting: an area source
+// lights a room, every face of which is within range.
+LightShadows shade_area(const Scene& scene, const std::vector<Receiver>& receivers,
+                        const std::vector<std::size_t>& rank, std::size_t light_index,
+                        const ShadowOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  LightShading shading(scene, receivers, rank, light_index, options);
+  const Light& light = shading.light();
+  const auto& panel = std::get<AreaLight>(light.source);
+  const Face& source = panel.polygon->faces()[panel.front];
+  // area_face_shadow decides the faces that see none of the source itself.
+  shading.cull(std::nullopt, true, [](std::size_t, const Face&) { return false; });
+  const auto candidates = shading.active_candidates(
+      [&](const std::vector<const ConvexPolyhedron*>& solids, const std::vector<Receiver>& chosen) {
+        return candidate_occluders(solids, chosen, source.vertices);
+      });
+  // What each occluder does under the whole source: made once (the faces whose plane cuts
+  // the source make their own).
+  const auto whole = per_candidate<AreaOcclusion>(
+      scene, candidates, options.parallel,
+      [&](const ConvexPolyhedron& solid) { return area_occlusion(solid, source.vertices); });
+  LightShadows result = shading.shade(
+      candidates, [&](const Receiver& receiver, const std::vector<std::size_t>& occluders_of) {
+        std::vector<AreaOccluder> occluders;
+        for (std::size_t o : occluders_of)
+          occluders.push_back({o, &scene.objects[o].solid, &whole[o]});
+        try {
+          return area_face_shadow(shading.face(receiver), source, panel.two_sided, occluders);
+        } catch (const std::domain_error&) {
+          throw InputError(scene.file.string(), light.json_path,
+                           "the area source '" + light.name +
+                               "' touches or passes through an object that shadows face " +
+                               std::to_string(receiver.face) + " of '" +
+                               scene.objects[receiver.object].name +
+                               "': not supported (docs/area-sources.md)");
+        }
+      });
+  result.stats.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
 // returns the face as a region of its own frame when it has no holes and all its pieces are
 // present (then a union of the pieces' regions that covers the face is this region, and
 // unite_pieces need not compute it); nothing otherwise.
@@ -455,8 +498,11 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
   result.lights.resize(lights.size());
   for_each_index(lights.size(), options.parallel && lights.size() > 1, [&](std::size_t k) {
     const std::size_t light = lights[k];
+    const auto& source = scene.lights[light].source;
     result.lights[k] = position_of(scene.lights[light])
                            ? shade_scene(scene, result.receivers, rank, light, options)
+                       : std::holds_alternative<AreaLight>(source)
+                           ? shade_area(scene, result.receivers, rank, light, options)
                            : shade_linear(scene, result.receivers, rank, light, options);
   });
   if (options.unite_mesh_faces && !scene.mesh_faces.empty()) unite_mesh_faces(scene, rank, result);

@@ -36,4 +36,10 @@ std::vector<std::vector<std::size_t>> candidate_occluders(
   return query(objects, receivers, [&](const Face& face) { return SweptRegion(face, q1, q2); });
 }
 
+std::vector<std::vector<std::size_t>> candidate_occluders(
+    const std::vector<const ConvexPolyhedron*>& objects, const std::vector<Receiver>& receivers,
+    const std::vector<Point3>& source) {
+  return query(objects, receivers, [&](const Face& face) { return SweptRegion(face, source); });
+}
+
 }  // namespace penumbra

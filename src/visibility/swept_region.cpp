@@ -22,28 +22,37 @@ IntervalPoint cross_from(const IntervalPoint& origin, const IntervalPoint& to_a,
 
 }  // namespace
 
-SweptRegion::SweptRegion(const Face& face, const Point3& q1, const Point3& q2) {
-  for (const Point3& v : face.vertices) points_.push_back(interval_point(v));
+SweptRegion::SweptRegion(const Face& face, const Point3& q1, const Point3& q2)
+    : SweptRegion(face, q1 == q2 ? std::vector<Point3>{q1} : std::vector<Point3>{q1, q2}) {}
+
+SweptRegion::SweptRegion(const Face& face, const std::vector<Point3>& source)
+    : SweptRegion(face.vertices, source) {}
+
+SweptRegion::SweptRegion(const std::vector<Point3>& receiver, const std::vector<Point3>& source) {
+  for (const Point3& v : receiver) points_.push_back(interval_point(v));
   const std::size_t n = points_.size();
-  points_.push_back(interval_point(q1));
-  const bool tube = q1 != q2;
-  if (tube) points_.push_back(interval_point(q2));
-  const std::size_t ia = n, ib = points_.size() - 1;
-  const IntervalPoint a = points_[ia], b = points_[ib];
-  // Candidate planes: through the tube and a face vertex; through a face edge and an end
-  // of the tube; the face's own plane. The points each plane is built through lie on it
-  // exactly and decide nothing (their intervals straddle 0).
+  for (const Point3& q : source) points_.push_back(interval_point(q));
+  const std::size_t m = source.size();
+  // Candidate planes: through a source edge and a face vertex; through a face edge and a
+  // source vertex; the face's plane and the source's. The points each plane is built through
+  // lie on it exactly and decide nothing (their intervals straddle 0).
+  const std::size_t source_edges = m < 2 ? 0 : m == 2 ? 1 : m;
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t next = (k + 1) % n;
     const IntervalPoint& v = points_[k];
     const IntervalPoint& w = points_[next];
-    if (tube) add(v, cross_from(a, b, v), {ia, ib, k});
-    add(v, cross_from(v, w, a), {k, next, ia});
-    if (tube) add(v, cross_from(v, w, b), {k, next, ib});
+    for (std::size_t e = 0; e < source_edges; ++e) {
+      const std::size_t a = n + e, b = n + (e + 1) % m;
+      add(v, cross_from(points_[a], points_[b], v), {a, b, k});
+    }
+    for (std::size_t q = n; q < n + m; ++q) add(v, cross_from(v, w, points_[q]), {k, next, q});
   }
-  std::vector<std::size_t> face_points(n);
+  std::vector<std::size_t> face_points(n), source_points(m);
   for (std::size_t k = 0; k < n; ++k) face_points[k] = k;
+  for (std::size_t k = 0; k < m; ++k) source_points[k] = n + k;
   if (n >= 3) add(points_[0], cross_from(points_[0], points_[1], points_[2]), face_points);
+  if (m >= 3)
+    add(points_[n], cross_from(points_[n], points_[n + 1], points_[n + 2]), source_points);
 }
 
 SweptRegion::SweptRegion(const Face& face, const LightPosition& light) {

@@ -27,7 +27,10 @@ namespace basis {
 
 class PatchMesh;
 
-enum class LightKind { point, linear, directional };
+enum class LightKind { point, linear, directional, area };
+
+// returns the kind as files name it: "point", "linear", "directional" or "area".
+const char* kind_name(LightKind kind);
 
 // Where one light's columns sit among the right-hand sides.
 struct LightColumns {

@@ -6,6 +6,8 @@
 // - point light:  E = I(theta) cos(alpha) / r^2, I from the light's distribution in its
 //                 photometric frame; 0 when an occluder meets the open segment P -> Q.
 // - directional:  E = E_n cos(alpha); 0 when an occluder meets the open ray toward the sun.
+// - area:         Lambert's closed form (area_source.h) over the exact visible part of the
+//                 source (shadow/source_view.h); 0 behind a one-sided source.
 // - linear:       the closed form integrated over the visible parts of the source: the
 //                 part on the outer side of the receiving plane minus the union of the
 //                 sub-segments each occluder hides (exact intervals, section 4.2.3). In

@@ -40,6 +40,7 @@ struct TraceOptions {
   Attenuation attenuation = Attenuation::none;
   int tube_samples = 16;      // stratified elements per linear source and shading point for
                               // Phong's highlight (the diffuse term is exact, tube_visibility.h)
+  int area_samples = 64;      // stratified shadow rays per area source and shading point
   std::uint64_t seed = 1980;  // the seed of every random choice (reproducible images)
   // Bézier patch objects: the patches (Newton on the bicubic) or their tessellation
   PatchSurfaces patches = PatchSurfaces::exact;

@@ -108,6 +108,22 @@ struct LinearLight {
   double candela_per_metre;  // Lambertian tube: intensity I sin(theta) per metre (Nishita eq. 5)
 };
 
+// A Lambertian planar convex polygon (docs/area-sources.md): a recessed troffer, a light panel, a
+// skylight. Its luminance is the same at every point and in every direction of its emitting side.
+struct AreaLight {
+  std::vector<Vec3d> vertices;  // as written: counter-clockwise seen from the emitting side
+  double luminance;             // cd/m^2
+  bool two_sided = false;       // emits on both sides (each with `luminance`)
+  // the polygon, exact: a flat solid whose faces are its two sides (ConvexPolyhedron::
+  // flat_polygon), and the index of the face on the emitting side (counter-clockwise
+  // from outside, so its ring is the source seen from the lit half-space).
+  std::shared_ptr<const ConvexPolyhedron> polygon;
+  std::size_t front = 0;
+
+  // the emitting area, m^2 (one side).
+  double area() const;
+};
+
 struct DirectionalLight {
   Vec3d direction;     // the direction light travels (sun into scene), exactly as written: not
                        // normalised
@@ -127,9 +143,12 @@ struct SunPlacement {
 
 struct Light {
   std::string name;
-  std::variant<PointLight, LinearLight, DirectionalLight> source;
+  std::variant<PointLight, LinearLight, DirectionalLight, AreaLight> source;
   std::string json_path;
 };
+
+// returns the light's kind as files name it: "point", "linear", "area" or "directional".
+const char* kind_name(const Light& light);
 
 struct Scene {
   std::filesystem::path file;       // the scene file; relative paths resolve beside it

@@ -22,8 +22,10 @@ struct OccluderShadow {
   std::size_t occluder;  // the occluding object's index (in the caller's numbering)
   Ring2 polygon;         // convex, counter-clockwise, canonical, in the face's frame; for a
                          // linear source the occluder's whole shadow (penumbra and umbra)
-  // Linear sources only (Nishita 1985 section 4.1, docs/linear-shadows.md):
-  std::optional<Ring2> umbra{};             // convex, inside polygon
+  // Linear and area sources only (Nishita 1985 section 4.1, docs/linear-shadows.md,
+  // docs/area-sources.md):
+  std::optional<Ring2> umbra{};  // convex, inside polygon
+  // Linear sources only:
   std::optional<LinearCase> linear_case{};  // App. A2 Case A or B
   bool object_space = false;                // the contours do not project onto the face: no loops
   Ring2 penumbra_loop{};                    // raw loops, clockwise, as built (section 4.1.2)
@@ -33,17 +35,17 @@ struct OccluderShadow {
 struct FaceShadow {
   bool faces_away = false;      // the source is not strictly on the face's outer side
   bool beyond_range = false;    // the face lies wholly outside the sphere of lighting: not computed
-  bool linear = false;          // computed for a linear source: umbra and penumbra below apply
-  bool source_clipped = false;  // linear: the face's plane cuts the source (Fig. 7, S3)
-  bool joint_occlusion = false;  // linear: two occluders' penumbrae overlap
+  bool extended = false;        // computed for a linear or area source: umbra, penumbra apply
+  bool source_clipped = false;  // extended: the face's plane cuts the source (Fig. 7, S3)
+  bool joint_occlusion = false;  // extended: two occluders' penumbrae overlap
   // linear, with ShadowOptions::joint_umbrae: joint_occlusion then says that the umbra has
   // joint parts, and this holds the exact umbra and penumbra with them and their conic edges
   // (exact_umbra.h); umbra and penumbra below stay the straight sets of single occluders.
   std::shared_ptr<const ExactUmbra> curved;
   std::vector<OccluderShadow> occluders;  // sorted by occluder
   Region2 shadow;                         // = umbra for point and directional sources
-  Region2 umbra;                          // linear: union of the occluders' umbrae
-  Region2 penumbra;                       // linear: shadow - umbra
+  Region2 umbra;                          // extended: union of the occluders' umbrae
+  Region2 penumbra;                       // extended: shadow - umbra
   Region2 lit;                            // the face minus shadow
   // beyond_range with ShadowOptions::occluders_beyond_range: every object that may shadow
   // the face (a superset, increasing); the regions above are then not computed.

@@ -1,5 +1,5 @@
 #pragma once
-// Exact shadows of a scene under its point, directional and linear sources (Nishita
+// Exact shadows of a scene under its point, directional, linear and area sources (Nishita
 // 1985 sections 3.1-3.2 and 4.1): for every light and every face, the shadow, umbra,
 // penumbra and lit polygon sets and each occluder's shadow polygon (and, for linear
 // sources, its umbra and loops), after culling with the sphere of lighting (point

@@ -34,4 +34,10 @@ std::vector<std::vector<std::size_t>> candidate_occluders(
     const std::vector<const ConvexPolyhedron*>& objects, const std::vector<Receiver>& receivers,
     const Point3& q1, const Point3& q2);
 
+// returns the candidates for a convex polygon source (its vertices in cycle order, no three
+// on a line): the region swept is conv(face, source).
+std::vector<std::vector<std::size_t>> candidate_occluders(
+    const std::vector<const ConvexPolyhedron*>& objects, const std::vector<Receiver>& receivers,
+    const std::vector<Point3>& source);
+
 }  // namespace penumbra

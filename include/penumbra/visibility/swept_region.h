@@ -1,8 +1,8 @@
 #pragma once
 // The closed region W swept by the segments from a face to a source (Nishita 1985 section
 // 3.2, last paragraph: only an occluder meeting W can shadow the face): conv(face, source)
-// for a point light or a tube, the prism face + t s (t >= 0, s toward the sun) for the sun;
-// with the planes that certainly support it, for separating-plane tests in interval
+// for a point light, a tube or an area source, the prism face + t s (t >= 0, s toward the sun) for
+// the sun; with the planes that certainly support it, for separating-plane tests in interval
 // arithmetic. The broad phase drops an occluder (or a box of them) that a plane certainly
 // separates from W: a superset of the occluders that shadow the face is kept, so every
 // result computed from it stays exact.
@@ -21,6 +21,12 @@ class SweptRegion {
  public:
   // the region from face to the tube q1 q2 (to a point light: q1 = q2).
   SweptRegion(const Face& face, const Point3& q1, const Point3& q2);
+  // the region from face to a convex source: a point, a segment's two ends, or a convex
+  // polygon's vertices in cycle order with no three on a line (an area source).
+  SweptRegion(const Face& face, const std::vector<Point3>& source);
+  // the region from a convex receiver (a face's vertices in cycle order, or one point) to a
+  // convex source as above: conv(receiver, source).
+  SweptRegion(const std::vector<Point3>& receiver, const std::vector<Point3>& source);
   // the region from face to a point light, or toward the sun.
   SweptRegion(const Face& face, const LightPosition& light);
 
