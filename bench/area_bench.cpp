@@ -113,6 +113,7 @@ BENCHMARK(area_monte_carlo_work_plane)
     ->Arg(64)
     ->Arg(256)
     ->Arg(512)
+    ->Arg(576)
     ->Arg(1024)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);

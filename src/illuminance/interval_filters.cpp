@@ -116,14 +116,6 @@ Certainly ray_meets_polygon(const ConvexPolyhedron& polygon, const Vec3d& point,
   return Certainly::unknown;
 }
 
-namespace {
-
-IntervalPoint cross(const IntervalPoint& a, const IntervalPoint& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-}  // namespace
-
 bool misses_triangle(const Occluder& occluder, const Vec3d& point, const Vec3d& a, const Vec3d& b) {
   const CGAL::Protect_FPU_rounding<true> upward;
   const ConvexPolyhedron& solid = *occluder.solid;

@@ -7,11 +7,8 @@
 
 #include "penumbra/base/input_error.h"
 #include "penumbra/base/parallel.h"
-#include "penumbra/illuminance/area_source.h"
 #include "penumbra/illuminance/point_source.h"
 #include "penumbra/photometry/orientation.h"
-#include "penumbra/shadow/source_view.h"
-#include "penumbra/visibility/swept_region.h"
 #include "solver_impl.h"
 
 namespace penumbra::illuminance {
@@ -44,13 +41,7 @@ IlluminanceSolver::IlluminanceSolver(const Scene& scene) {
       impl->cached.emplace_back(CachedLinear{to_exact(tube->start), to_exact(tube->end), tube,
                                              box_of({&tube->start, &tube->end})});
     } else if (const auto* panel = std::get_if<AreaLight>(&light.source)) {
-      Box box{panel->vertices[0], panel->vertices[0]};
-      for (const Vec3d& q : panel->vertices)
-        for (int i = 0; i < 3; ++i) {
-          box.low[i] = std::min(box.low[i], q[i]);
-          box.high[i] = std::max(box.high[i], q[i]);
-        }
-      impl->cached.emplace_back(CachedArea{panel, box});
+      impl->cached.emplace_back(cache_area(*panel, impl->occluders));
     } else {
       const auto& sun = std::get<DirectionalLight>(light.source);
       const Vec3d toward{-sun.direction[0], -sun.direction[1], -sun.direction[2]};
@@ -111,55 +102,6 @@ double IlluminanceSolver::Impl::directional_light(const CachedDirectional& sun,
       }))
     return 0;
   return directional_illuminance(normal, sun.light->direction, sun.light->illuminance);
-}
-
-double IlluminanceSolver::Impl::area_light(const CachedArea& panel, const QueryPoint& point,
-                                           const Vec3d& normal, OccluderSubset subset) const {
-  // The side of the source turned toward the point (a one-sided source has one).
-  const AreaLight& light = *panel.light;
-  const Face* source = &light.polygon->faces()[light.front];
-  if (source->plane.oriented_side(point.exact()) != CGAL::ON_POSITIVE_SIDE) {
-    if (!light.two_sided) return 0;
-    source = &light.polygon->faces()[1 - light.front];
-  }
-  // The occluders whose box meets the box of the point and the source: a superset of those
-  // that meet conv(point, source).
-  Box reach = panel.box;
-  for (int i = 0; i < 3; ++i) {
-    reach.low[i] = std::min(reach.low[i], point.doubles()[i]);
-    reach.high[i] = std::max(reach.high[i], point.doubles()[i]);
-  }
-  // Only an occluder meeting the pyramid conv(point, source) can hide part of it: those a
-  // plane certainly separates from it (intervals) are skipped here and in visible_source.
-  const SweptRegion pyramid({point.exact()}, source->vertices);
-  std::vector<const ConvexPolyhedron*> near;
-  any_occluder(occluders.size(), subset, [&](std::size_t k) {
-    if (overlap(occluders[k].box, reach) && !pyramid.separated_from(*occluders[k].solid))
-      near.push_back(occluders[k].solid);
-    return false;
-  });
-  // Lambert's closed form over the visible part's boundary: rings counter-clockwise in the
-  // source's frame are counter-clockwise seen from the point (area_source.h), and the edge sum
-  // of a clockwise ring is negative: the signed sum over visible_source's rings is the visible
-  // part's.
-  std::vector<std::vector<Vec3d>> rings;
-  // The usual case, decided without rationals: nothing in the way and every vertex certainly
-  // in front of the receiving plane, so the whole source is visible (its vertices are the
-  // doubles written in the scene, so the ring is the one the exact path would give).
-  if (near.empty()) {
-    std::vector<Vec3d> ring;
-    for (const Point3& q : source->vertices) ring.push_back(to_double(q));
-    if (std::all_of(ring.begin(), ring.end(), [&](const Vec3d& q) {
-          return outer_side(normal, q, point.doubles()) == Certainly::yes;
-        }))
-      return light.luminance * projected_solid_angle(point.doubles(), normal, {ring});
-  }
-  for (const Ring2& ring : visible_source(*source, point.exact(),
-                                          Plane3(point.exact(), to_exact_vector(normal)), near)) {
-    rings.emplace_back();
-    for (const Point2& q : ring) rings.back().push_back(to_double(source->frame.to_world(q)));
-  }
-  return light.luminance * projected_solid_angle(point.doubles(), normal, rings);
 }
 
 double IlluminanceSolver::Impl::light_at(std::size_t light, const QueryPoint& point,

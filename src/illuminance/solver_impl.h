@@ -4,6 +4,7 @@
 // their boxes, what each light caches, and the queries' steps.
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <variant>
@@ -40,9 +41,16 @@ struct CachedDirectional {
 struct CachedArea {
   const AreaLight* light;
   Box box;  // of the source
+  // in_front[f][k]: every vertex of occluder k certainly strictly on the outer side of the
+  // plane of the source's face f (intervals), so between that plane and any point that face
+  // lights.
+  std::array<std::vector<char>, 2> in_front;
 };
 
 using CachedLight = std::variant<CachedPoint, CachedLinear, CachedDirectional, CachedArea>;
+
+// returns what the solver caches of a panel among occluders (area_visibility.cpp).
+CachedArea cache_area(const AreaLight& panel, const std::vector<Occluder>& occluders);
 
 // The occluders one query tests: every object (nullptr) or a caller's subset of them.
 using OccluderSubset = const std::vector<std::size_t>*;

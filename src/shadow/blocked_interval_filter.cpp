@@ -41,18 +41,6 @@ Interval rational_interval(const Rational& x) {
   return Interval(CGAL::to_interval(x));
 }
 
-IntervalPoint minus(const IntervalPoint& a, const IntervalPoint& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-
-IntervalPoint cross(const IntervalPoint& a, const IntervalPoint& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-Interval dot(const IntervalPoint& a, const IntervalPoint& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 // the source parameter where the line from p through x meets the line q1 + t d.
 std::optional<Interval> parameter_through(const IntervalPoint& p, const IntervalPoint& x,
                                           const IntervalPoint& q1, const IntervalPoint& d) {

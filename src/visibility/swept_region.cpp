@@ -8,16 +8,13 @@ namespace {
 // returns normal . (x - origin). Needs upward rounding.
 Interval dot_from(const IntervalPoint& normal, const IntervalPoint& x,
                   const IntervalPoint& origin) {
-  return normal[0] * (x[0] - origin[0]) + normal[1] * (x[1] - origin[1]) +
-         normal[2] * (x[2] - origin[2]);
+  return dot(normal, minus(x, origin));
 }
 
 // returns (to_a - origin) x (to_b - origin). Needs upward rounding.
 IntervalPoint cross_from(const IntervalPoint& origin, const IntervalPoint& to_a,
                          const IntervalPoint& to_b) {
-  const Interval a[3] = {to_a[0] - origin[0], to_a[1] - origin[1], to_a[2] - origin[2]};
-  const Interval b[3] = {to_b[0] - origin[0], to_b[1] - origin[1], to_b[2] - origin[2]};
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  return cross(minus(to_a, origin), minus(to_b, origin));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "penumbra/base/numbers.h"
 #include "penumbra/illuminance/area_source.h"
 #include "penumbra/illuminance/scene_illuminance.h"
+#include "penumbra/shadow/source_view.h"
 #include "scene_support.h"
 
 namespace {
@@ -40,6 +41,23 @@ std::string panel(const Vec3d& corner, const Vec3d& u, const Vec3d& v, double lu
   point(0, 1);
   text << R"(], "luminance": )" << luminance << "}";
   return text.str();
+}
+
+// Objects as scene text: count hulls "c0", "c1", ... of 6 random points each, within spread
+// (half as much in z) of a centre over x, y in [1.2, 2.8] and z in [low, high].
+std::string random_hulls(std::mt19937& random, int count, double low, double high, double spread) {
+  std::uniform_real_distribution<double> centre(1.2, 2.8), height(low, high),
+      offset(-spread, spread);
+  std::ostringstream objects;
+  for (int k = 0; k < count; ++k) {
+    const double x = centre(random), y = centre(random), z = height(random);
+    objects << (k ? "," : "") << R"({"name": "c)" << k << R"(", "convex": [)";
+    for (int i = 0; i < 6; ++i)
+      objects << (i ? "," : "") << "[" << x + offset(random) << "," << y + offset(random) << ","
+              << z + offset(random) / 2 << "]";
+    objects << "]}";
+  }
+  return objects.str();
 }
 
 // The form factor from a differential area to a parallel rectangle a x b at distance c,
@@ -184,19 +202,10 @@ BOOST_AUTO_TEST_CASE(flux_conservation_in_the_room_of_5_3) {
 // (fixed seed) under the panel of 5.3; 12 random points on the floor.
 BOOST_AUTO_TEST_CASE(occluded_points_against_row_quadrature) {
   std::mt19937 random(20261203);
-  std::uniform_real_distribution<double> centre(1.2, 2.8), height(1.0, 2.3);
   // Hulls of 6 random points: no edge parallel to the rows, whose shadow edge would make
   // g(y) jump (a jump costs the rule O(h), not O(h^2)).
-  std::uniform_real_distribution<double> offset(-0.45, 0.45);
   std::ostringstream boxes;
-  for (int k = 0; k < 3; ++k) {
-    const double x = centre(random), y = centre(random), z = height(random);
-    boxes << (k ? "," : "") << R"({"name": "c)" << k << R"(", "convex": [)";
-    for (int i = 0; i < 6; ++i)
-      boxes << (i ? "," : "") << "[" << x + offset(random) << "," << y + offset(random) << ","
-            << z + offset(random) / 2 << "]";
-    boxes << "]}";
-  }
+  boxes << random_hulls(random, 3, 1.0, 2.3, 0.45);
   const double luminance = 1000;
   const Scene scene =
       scene_from(boxes.str(), panel({1.5, 1.5, 3}, {0, 1, 0}, {1, 0, 0}, luminance));
@@ -252,6 +261,53 @@ BOOST_AUTO_TEST_CASE(occluded_points_against_row_quadrature) {
     shaded += e < unoccluded.at(p, {0, 0, 1}).total * (1 - 1e-3);
   }
   BOOST_TEST(shaded >= 4);  // the points test occlusion, not only the open panel
+}
+
+// The solver decides the visible part in intervals when they are certain (area_visibility.cpp)
+// and exactly otherwise: its value must be Lambert's sum over the exact visible part
+// (visible_source, rationals throughout) to rounding, at random points with random receiving
+// normals, among random hulls, boxes whose faces line up with the panel's edges (planes
+// through the point and an edge of both) and a box touching the panel's plane (the interval
+// path leaves that one to the exact path).
+BOOST_AUTO_TEST_CASE(interval_path_equals_the_exact_visible_part) {
+  std::mt19937 random(4242);
+  std::ostringstream objects;
+  objects << random_hulls(random, 4, 1.2, 2.4, 0.4);
+  objects << R"(, {"name": "aligned", "box": {"min": [1.5, 1.5, 2], "max": [2, 2, 2.2]}})"
+          << R"(, {"name": "touching", "box": {"min": [2.4, 1.2, 2.7], "max": [2.7, 1.6, 3]}})";
+  const double luminance = 1000;
+  const Scene scene =
+      scene_from(objects.str(), panel({1.5, 1.5, 3}, {0, 1, 0}, {1, 0, 0}, luminance));
+  const IlluminanceSolver solver(scene);
+  const auto& source = std::get<AreaLight>(scene.lights[0].source);
+  const Face& face = source.polygon->faces()[source.front];
+  std::vector<const ConvexPolyhedron*> occluders;
+  for (const Object& object : scene.objects) occluders.push_back(&object.solid);
+  std::uniform_real_distribution<double> floor(0.5, 3.5), tilt(-0.6, 0.6);
+  int partly = 0;
+  for (int k = 0; k < 400; ++k) {
+    // Every fourth point on the grid of the aligned box's edges (x, y in {1.5, 2}).
+    const Vec3d p = k % 4 ? Vec3d{floor(random), floor(random), tilt(random) + 0.6}
+                          : Vec3d{1.5 + 0.5 * (k / 4 % 2), 1.5 + 0.5 * (k / 8 % 2), 0.2};
+    Vec3d n{tilt(random), tilt(random), 1};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& c : n) c /= length;
+    std::vector<std::vector<Vec3d>> rings;
+    const Point3 x = to_exact(p);
+    for (const Ring2& ring : visible_source(face, x, Plane3(x, to_exact_vector(n)), occluders)) {
+      rings.emplace_back();
+      for (const Point2& q : ring) rings.back().push_back(to_double(face.frame.to_world(q)));
+    }
+    const double exact = luminance * projected_solid_angle(p, n, rings);
+    const double open =
+        luminance *
+        projected_solid_angle(p, n, {{{1.5, 1.5, 3}, {1.5, 2.5, 3}, {2.5, 2.5, 3}, {2.5, 1.5, 3}}});
+    const double e = solver.light_at(0, p, n);
+    BOOST_TEST(std::abs(e - exact) <= 1e-9 * std::abs(open) + 1e-12,
+               "point " << k << ": " << e << " against " << exact);
+    partly += exact > 1e-6 * open && exact < (1 - 1e-6) * open;
+  }
+  BOOST_TEST(partly > 100);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

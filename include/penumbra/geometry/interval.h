@@ -37,6 +37,19 @@ std::decay_t<decltype(std::declval<const Plane&>().a())> normal_dot(const Plane&
   return Value(plane.a() * x[0] + plane.b() * x[1] + plane.c() * x[2]);
 }
 
+// Vectors of intervals (points and directions alike); all need upward rounding.
+inline IntervalPoint minus(const IntervalPoint& a, const IntervalPoint& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+
+inline IntervalPoint cross(const IntervalPoint& a, const IntervalPoint& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+inline Interval dot(const IntervalPoint& a, const IntervalPoint& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
 // returns the interval enclosure of an exact point's coordinates (its approximation).
 template <class ExactPoint>
 IntervalPoint interval_point(const ExactPoint& p) {

@@ -12,6 +12,7 @@
 // from P (from the emitting side) and the polygon lies wholly on the outer side of the plane
 // through P with normal N (the receiving face hides the rest: clip the source first).
 
+#include <cstddef>
 #include <vector>
 
 #include "penumbra/base/vec3d.h"
@@ -24,5 +25,10 @@ namespace penumbra::illuminance {
 // through point with unit normal normal.
 double projected_solid_angle(const Vec3d& point, const Vec3d& normal,
                              const std::vector<std::vector<Vec3d>>& rings);
+
+// returns the edge sum of one ring of count vertices (positive when it turns
+// counter-clockwise seen from point), with the same precondition.
+double projected_solid_angle(const Vec3d& point, const Vec3d& normal, const Vec3d* ring,
+                             std::size_t count);
 
 }  // namespace penumbra::illuminance

@@ -1,0 +1,328 @@
+// The visible part of an area source seen from a receiving point, the solver's panel query
+// (docs/area-sources.md, "Illuminance"): decided in intervals when they are certain, exactly
+// (shadow/source_view.h) otherwise, as the tube's (linear_visibility.cpp).
+//
+// In intervals the part is built in the source's plane, in coordinates relative to the point:
+// the source polygon clipped by half-spaces through the point. An occluder V lying strictly between
+// the source's plane and the point hides from it the source points q whose segment from the point
+// meets V: when every vertex of V is strictly on the point's side of the source's plane, those
+// are the points of the open cone from the point over V, the intersection of the half-spaces
+// bounded by the planes through the point and V's silhouette edges (the edges between a face
+// the point sees and one it does not). Inclusion and exclusion over the hidden parts then
+// follow visible_source's, each intersection one more clip of the previous term. Every sign is
+// certified or the exact path answers, so the parts are the exact path's up to the rounding of
+// their vertices (known to within 1e-10 of the source's size, or the exact path gives them).
+
+#include <boost/container/small_vector.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "penumbra/illuminance/area_source.h"
+#include "penumbra/shadow/source_view.h"
+#include "solver_impl.h"
+
+namespace penumbra::illuminance {
+
+using namespace detail;
+
+namespace {
+
+// The most rings inclusion and exclusion may make here before the exact path decides (which
+// has the Boolean difference for many overlapping parts).
+constexpr std::size_t kMostTerms = 64;
+
+// Points relative to the receiving point P (P is the origin), and convex rings of them.
+using IntervalRing = boost::container::small_vector<IntervalPoint, 12>;
+
+// returns x - P for an exact point x. Needs upward rounding.
+IntervalPoint from(const IntervalPoint& p, const Point3& x) {
+  return minus(interval_point(x), p);
+}
+
+enum class ClipResult { unchanged, clipped, emptied, uncertain };
+
+// clips a convex ring by the open half-space normal . q > 0 through P (Sutherland and
+// Hodgman), every vertex's side certified; a ring wholly inside is unchanged. Needs upward
+// rounding.
+ClipResult clip(IntervalRing& ring, const IntervalPoint& normal) {
+  boost::container::small_vector<Interval, 12> value(ring.size());
+  bool all_in = true, all_out = true;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    value[i] = dot(normal, ring[i]);
+    if (value[i].inf() > 0)
+      all_out = false;
+    else if (value[i].sup() < 0)
+      all_in = false;
+    else
+      return ClipResult::uncertain;
+  }
+  if (all_in) return ClipResult::unchanged;
+  if (all_out) {
+    ring.clear();
+    return ClipResult::emptied;
+  }
+  IntervalRing kept;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const std::size_t j = (i + 1) % ring.size();
+    const bool in_i = value[i].inf() > 0, in_j = value[j].inf() > 0;
+    if (in_i) kept.push_back(ring[i]);
+    if (in_i != in_j) {
+      // The crossing q_i + t (q_j - q_i), t = F_i / (F_i - F_j), the signs certainly opposite.
+      const Interval t = value[i] / (value[i] - value[j]);
+      const IntervalPoint step = minus(ring[j], ring[i]);
+      kept.push_back(
+          {ring[i][0] + t * step[0], ring[i][1] + t * step[1], ring[i][2] + t * step[2]});
+    }
+  }
+  ring = std::move(kept);
+  return ClipResult::clipped;
+}
+
+// The open cone from P over a solid: the half-spaces normal . q > 0 through P whose
+// intersection it is (see the top of this file); nothing when P's side of a face is
+// uncertain. Needs upward rounding.
+using Cone = boost::container::small_vector<IntervalPoint, 12>;
+
+std::optional<Cone> cone_over(const ConvexPolyhedron& solid, const IntervalPoint& p) {
+  const std::vector<Face>& faces = solid.faces();
+  boost::container::small_vector<char, 16> seen(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Interval side = plane_value(faces[f].plane.approx(), p);
+    if (!(side.inf() > 0 || side.sup() < 0)) return std::nullopt;
+    seen[f] = side.inf() > 0;
+  }
+  // A silhouette edge a -> b of a face P sees (counter-clockwise seen from outside): with c
+  // inside that face, det(a - P, b - P, c - P) = -((b - a) x (c - a)) . (P - a) < 0, so the
+  // solid lies on the positive side of (b - P) x (a - P).
+  Cone cone;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (!seen[f]) continue;
+    const Face& face = faces[f];
+    for (std::size_t k = 0; k < face.vertices.size(); ++k)
+      if (!seen[face.neighbours[k]])
+        cone.push_back(cross(from(p, face.vertices[(k + 1) % face.vertices.size()]),
+                             from(p, face.vertices[k])));
+  }
+  return cone;
+}
+
+// The closed pyramid conv(P, source), for culling boxes: the planes through P and the source's
+// edges (the source seen from P as a face is seen: cone_over's formula; it lies on their
+// closed positive sides) and, last as it seldom separates anything, the source's plane.
+struct Pyramid {
+  Cone sides;
+  IntervalPoint source_normal, source_point;
+};
+
+Pyramid pyramid_over(const Face& source, const IntervalPoint& p) {
+  Pyramid pyramid;
+  const std::size_t n = source.vertices.size();
+  for (std::size_t k = 0; k < n; ++k)
+    pyramid.sides.push_back(
+        cross(from(p, source.vertices[(k + 1) % n]), from(p, source.vertices[k])));
+  const auto& plane = source.plane.approx();
+  pyramid.source_normal = {plane.a(), plane.b(), plane.c()};
+  pyramid.source_point = from(p, source.vertices[0]);
+  return pyramid;
+}
+
+// returns true when the box (given relative to P by its corners low and high) is certainly
+// strictly outside the closed half-space normal . (q - origin) >= 0: the greatest value over
+// the box, the sum over the axes of the greater of its two ends' terms, is certainly
+// negative. Needs upward rounding.
+bool outside(const IntervalPoint& low, const IntervalPoint& high, const IntervalPoint& normal,
+             const IntervalPoint* origin = nullptr) {
+  double greatest = 0;
+  for (int i = 0; i < 3; ++i) {
+    // A certainly positive (negative) coefficient is greatest at the upper (lower) end.
+    const Interval& n = normal[i];
+    const auto term = [&](const Interval& end) {
+      return (n * (origin ? end - (*origin)[i] : end)).sup();
+    };
+    greatest += n.inf() >= 0   ? term(high[i])
+                : n.sup() <= 0 ? term(low[i])
+                               : std::max(term(low[i]), term(high[i]));
+  }
+  return greatest < 0;
+}
+
+bool outside(const Pyramid& pyramid, const Box& box, const IntervalPoint& p) {
+  const IntervalPoint low{Interval(box.low[0]) - p[0], Interval(box.low[1]) - p[1],
+                          Interval(box.low[2]) - p[2]};
+  const IntervalPoint high{Interval(box.high[0]) - p[0], Interval(box.high[1]) - p[1],
+                           Interval(box.high[2]) - p[2]};
+  return std::any_of(pyramid.sides.begin(), pyramid.sides.end(),
+                     [&](const IntervalPoint& normal) { return outside(low, high, normal); }) ||
+         outside(low, high, pyramid.source_normal, &pyramid.source_point);
+}
+
+// A convex part of the visible part's signed sum, relative to P in doubles: counted once, or
+// taken away.
+struct SignedRing {
+  boost::container::small_vector<Vec3d, 12> ring;
+  bool negative;
+};
+
+using SignedRings = boost::container::small_vector<SignedRing, 8>;
+
+// returns the signed convex parts whose sum is the visible part of source from P
+// (visible_source's), none when nothing is visible, or nothing at all when intervals cannot
+// certify a decision (then the exact path answers). Needs upward rounding.
+std::optional<SignedRings> visible_filtered(const Face& source, const IntervalPoint& p,
+                                            const Vec3d& normal,
+                                            const std::vector<const ConvexPolyhedron*>& near,
+                                            const std::vector<char>& in_front) {
+  IntervalRing part;
+  for (const Point3& q : source.vertices) part.push_back(from(p, q));
+  // Fig. 7, S3: the receiving surface hides the part of the source not strictly on its outer
+  // side.
+  if (clip(part, {Interval(normal[0]), Interval(normal[1]), Interval(normal[2])}) ==
+      ClipResult::uncertain)
+    return std::nullopt;
+  if (part.empty()) return SignedRings{};
+  boost::container::small_vector<Cone, 8> cones;
+  boost::container::small_vector<IntervalRing, 8> hidden;
+  for (std::size_t k = 0; k < near.size(); ++k) {
+    // The cone is what it hides only when it lies between the source's plane and P.
+    if (!in_front[k]) return std::nullopt;
+    auto cone = cone_over(*near[k], p);
+    if (!cone) return std::nullopt;
+    IntervalRing shadow = part;
+    bool whole = true;
+    for (const IntervalPoint& side : *cone) {
+      const ClipResult result = clip(shadow, side);
+      if (result == ClipResult::uncertain) return std::nullopt;
+      if (result == ClipResult::emptied) break;
+      whole = whole && result == ClipResult::unchanged;
+    }
+    if (shadow.empty()) continue;
+    // One occluder hides all of it (the usual umbra): nothing is visible, exactly 0.
+    if (whole) return SignedRings{};
+    hidden.push_back(std::move(shadow));
+    cones.push_back(std::move(*cone));
+  }
+  // The rings become doubles to integrate, as the exact path's do, when their vertices are
+  // known to within 1e-10 of the part's size.
+  double size = 0;
+  for (const IntervalPoint& q : part)
+    for (int i = 0; i < 3; ++i) size = std::max(size, std::abs(q[i].inf() - part[0][i].inf()));
+  SignedRings rings;
+  const auto keep = [&](const IntervalRing& ring, bool negative) {
+    rings.push_back({{}, negative});
+    for (const IntervalPoint& q : ring) {
+      for (int i = 0; i < 3; ++i)
+        if (!(q[i].sup() - q[i].inf() <= 1e-10 * size)) return false;
+      rings.back().ring.push_back(
+          {CGAL::to_double(q[0]), CGAL::to_double(q[1]), CGAL::to_double(q[2])});
+    }
+    return true;
+  };
+  // part - sum H_i + sum H_i ^ H_j - ...: depth first over the subsets in increasing order,
+  // each intersection the previous one clipped by one more cone; an empty one ends a branch.
+  const auto add = [&](const auto& self, const IntervalRing& ring, std::size_t first,
+                       std::size_t count) -> bool {
+    for (std::size_t i = first; i < cones.size(); ++i) {
+      IntervalRing meet = count == 0 ? hidden[i] : ring;
+      for (std::size_t h = 0; count > 0 && h < cones[i].size() && !meet.empty(); ++h)
+        if (clip(meet, cones[i][h]) == ClipResult::uncertain) return false;
+      if (meet.empty()) continue;
+      if (rings.size() >= kMostTerms || !keep(meet, count % 2 == 0) ||
+          !self(self, meet, i + 1, count + 1))
+        return false;
+    }
+    return true;
+  };
+  if (!keep(part, false) || !add(add, part, 0, 0)) return std::nullopt;
+  return rings;
+}
+
+}  // namespace
+
+CachedArea detail::cache_area(const AreaLight& panel, const std::vector<Occluder>& occluders) {
+  CachedArea cached{&panel, {panel.vertices[0], panel.vertices[0]}, {}};
+  for (const Vec3d& q : panel.vertices)
+    for (int i = 0; i < 3; ++i) {
+      cached.box.low[i] = std::min(cached.box.low[i], q[i]);
+      cached.box.high[i] = std::max(cached.box.high[i], q[i]);
+    }
+  const CGAL::Protect_FPU_rounding<true> upward;
+  for (std::size_t f = 0; f < 2; ++f) {
+    const auto& plane = panel.polygon->faces()[f].plane.approx();
+    for (const Occluder& occluder : occluders) {
+      const auto& vertices = occluder.solid->vertices();
+      cached.in_front[f].push_back(std::all_of(
+          vertices.begin(), vertices.end(),
+          [&](const Point3& v) { return plane_value(plane, interval_point(v)).inf() > 0; }));
+    }
+  }
+  return cached;
+}
+
+double IlluminanceSolver::Impl::area_light(const CachedArea& panel, const QueryPoint& point,
+                                           const Vec3d& normal, OccluderSubset subset) const {
+  // The side of the source turned toward the point (a one-sided source has one).
+  const AreaLight& light = *panel.light;
+  const Face* source = &light.polygon->faces()[light.front];
+  CGAL::Oriented_side side;
+  {
+    const CGAL::Protect_FPU_rounding<true> upward;
+    const Interval value = plane_value(source->plane.approx(), point.doubles());
+    side = value.inf() > 0   ? CGAL::ON_POSITIVE_SIDE
+           : value.sup() < 0 ? CGAL::ON_NEGATIVE_SIDE
+                             : source->plane.oriented_side(point.exact());
+  }
+  if (side != CGAL::ON_POSITIVE_SIDE) {
+    if (!light.two_sided || side == CGAL::ON_ORIENTED_BOUNDARY) return 0;
+    source = &light.polygon->faces()[1 - light.front];
+  }
+  // The occluders whose box meets the box of the point and the source: a superset of those
+  // that meet conv(point, source).
+  Box reach = panel.box;
+  for (int i = 0; i < 3; ++i) {
+    reach.low[i] = std::min(reach.low[i], point.doubles()[i]);
+    reach.high[i] = std::max(reach.high[i], point.doubles()[i]);
+  }
+  // Only an occluder meeting the pyramid conv(point, source) can hide part of it: those whose
+  // box one of the pyramid's planes certainly separates from it are skipped here; both paths
+  // clip the others, visible_source after its own test of the solid.
+  std::vector<const ConvexPolyhedron*> near;
+  std::vector<char> in_front;  // of each near one
+  std::optional<SignedRings> parts;
+  {
+    const CGAL::Protect_FPU_rounding<true> upward;
+    const IntervalPoint p{Interval(point.doubles()[0]), Interval(point.doubles()[1]),
+                          Interval(point.doubles()[2])};
+    std::optional<Pyramid> pyramid;
+    any_occluder(occluders.size(), subset, [&](std::size_t k) {
+      if (!overlap(occluders[k].box, reach)) return false;
+      if (!pyramid) pyramid = pyramid_over(*source, p);
+      if (!outside(*pyramid, occluders[k].box, p)) {
+        near.push_back(occluders[k].solid);
+        in_front.push_back(panel.in_front[source == &light.polygon->faces()[0] ? 0 : 1][k]);
+      }
+      return false;
+    });
+    parts = visible_filtered(*source, p, normal, near, in_front);
+  }
+  // Lambert's closed form over the visible part's boundary: rings counter-clockwise in the
+  // source's frame are counter-clockwise seen from the point (area_source.h), and the edge sum
+  // of a clockwise ring is negative: the signed sum over visible_source's rings is the visible
+  // part's.
+  if (parts) {
+    double omega = 0;
+    for (const SignedRing& part : *parts)
+      omega += (part.negative ? -1 : 1) *
+               projected_solid_angle({0, 0, 0}, normal, part.ring.data(), part.ring.size());
+    return light.luminance * omega;
+  }
+  std::vector<std::vector<Vec3d>> rings;
+  for (const Ring2& ring : visible_source(*source, point.exact(),
+                                          Plane3(point.exact(), to_exact_vector(normal)), near)) {
+    rings.emplace_back();
+    for (const Point2& q : ring) rings.back().push_back(to_double(source->frame.to_world(q)));
+  }
+  return light.luminance * projected_solid_angle(point.doubles(), normal, rings);
+}
+
+}  // namespace penumbra::illuminance
