@@ -9,7 +9,8 @@
 // are the points of the open cone from the point over V, the intersection of the half-spaces
 // bounded by the planes through the point and V's silhouette edges (the edges between a face
 // the point sees and one it does not). Inclusion and exclusion over the hidden parts then
-// follow visible_source's, each intersection one more clip of the previous term. Every sign is
+// follow visible_source's, each intersection one more clip of the previous term, each vertex
+// computed afresh from the two planes through the point that meet there. Every sign is
 // certified or the exact path answers, so the parts are the exact path's up to the rounding of
 // their vertices (known to within 1e-10 of the source's size, or the exact path gives them).
 
@@ -32,12 +33,32 @@ namespace {
 // has the Boolean difference for many overlapping parts).
 constexpr std::size_t kMostTerms = 64;
 
-// Points relative to the receiving point P (P is the origin), and convex rings of them.
-using IntervalRing = boost::container::small_vector<IntervalPoint, 12>;
-
 // returns x - P for an exact point x. Needs upward rounding.
 IntervalPoint from(const IntervalPoint& p, const Point3& x) {
   return minus(interval_point(x), p);
+}
+
+// A convex ring in the source's plane, relative to the receiving point P (P is the origin):
+// its vertices, and for each edge k (from vertex k to k + 1) the normal of the plane through
+// P that holds it. A vertex made by a clip is the meeting point of two such planes and the
+// source's plane, computed from them afresh (as receiver_clip.h does exactly): no chain of
+// constructions widens the intervals clip after clip.
+struct IntervalRing {
+  boost::container::small_vector<IntervalPoint, 12> vertex, edge;
+};
+
+// The source's plane relative to P: n . q = offset.
+struct SourcePlane {
+  IntervalPoint normal;
+  Interval offset;
+};
+
+// returns the point of the source's plane on the planes through P with normals a and b.
+// Needs upward rounding.
+IntervalPoint meet(const SourcePlane& plane, const IntervalPoint& a, const IntervalPoint& b) {
+  const IntervalPoint d = cross(a, b);
+  const Interval scale = plane.offset / dot(plane.normal, d);
+  return {d[0] * scale, d[1] * scale, d[2] * scale};
 }
 
 enum class ClipResult { unchanged, clipped, emptied, uncertain };
@@ -45,11 +66,12 @@ enum class ClipResult { unchanged, clipped, emptied, uncertain };
 // clips a convex ring by the open half-space normal . q > 0 through P (Sutherland and
 // Hodgman), every vertex's side certified; a ring wholly inside is unchanged. Needs upward
 // rounding.
-ClipResult clip(IntervalRing& ring, const IntervalPoint& normal) {
-  boost::container::small_vector<Interval, 12> value(ring.size());
+ClipResult clip(IntervalRing& ring, const IntervalPoint& normal, const SourcePlane& plane) {
+  const std::size_t n = ring.vertex.size();
+  boost::container::small_vector<Interval, 12> value(n);
   bool all_in = true, all_out = true;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    value[i] = dot(normal, ring[i]);
+  for (std::size_t i = 0; i < n; ++i) {
+    value[i] = dot(normal, ring.vertex[i]);
     if (value[i].inf() > 0)
       all_out = false;
     else if (value[i].sup() < 0)
@@ -59,20 +81,22 @@ ClipResult clip(IntervalRing& ring, const IntervalPoint& normal) {
   }
   if (all_in) return ClipResult::unchanged;
   if (all_out) {
-    ring.clear();
+    ring.vertex.clear();
+    ring.edge.clear();
     return ClipResult::emptied;
   }
   IntervalRing kept;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const std::size_t j = (i + 1) % ring.size();
-    const bool in_i = value[i].inf() > 0, in_j = value[j].inf() > 0;
-    if (in_i) kept.push_back(ring[i]);
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool in_i = value[i].inf() > 0, in_j = value[(i + 1) % n].inf() > 0;
+    if (in_i) {
+      kept.vertex.push_back(ring.vertex[i]);
+      kept.edge.push_back(ring.edge[i]);
+    }
     if (in_i != in_j) {
-      // The crossing q_i + t (q_j - q_i), t = F_i / (F_i - F_j), the signs certainly opposite.
-      const Interval t = value[i] / (value[i] - value[j]);
-      const IntervalPoint step = minus(ring[j], ring[i]);
-      kept.push_back(
-          {ring[i][0] + t * step[0], ring[i][1] + t * step[1], ring[i][2] + t * step[2]});
+      // Edge i crosses the plane: leaving, the boundary goes on along the plane; entering,
+      // along edge i.
+      kept.vertex.push_back(meet(plane, ring.edge[i], normal));
+      kept.edge.push_back(in_i ? normal : ring.edge[i]);
     }
   }
   ring = std::move(kept);
@@ -173,14 +197,20 @@ std::optional<SignedRings> visible_filtered(const Face& source, const IntervalPo
                                             const Vec3d& normal,
                                             const std::vector<const ConvexPolyhedron*>& near,
                                             const std::vector<char>& in_front) {
+  const auto& approx = source.plane.approx();
+  const SourcePlane plane{{approx.a(), approx.b(), approx.c()}, -plane_value(approx, p)};
   IntervalRing part;
-  for (const Point3& q : source.vertices) part.push_back(from(p, q));
+  const std::size_t n = source.vertices.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    part.vertex.push_back(from(p, source.vertices[k]));
+    part.edge.push_back(cross(from(p, source.vertices[k]), from(p, source.vertices[(k + 1) % n])));
+  }
   // Fig. 7, S3: the receiving surface hides the part of the source not strictly on its outer
   // side.
-  if (clip(part, {Interval(normal[0]), Interval(normal[1]), Interval(normal[2])}) ==
+  if (clip(part, {Interval(normal[0]), Interval(normal[1]), Interval(normal[2])}, plane) ==
       ClipResult::uncertain)
     return std::nullopt;
-  if (part.empty()) return SignedRings{};
+  if (part.vertex.empty()) return SignedRings{};
   boost::container::small_vector<Cone, 8> cones;
   boost::container::small_vector<IntervalRing, 8> hidden;
   for (std::size_t k = 0; k < near.size(); ++k) {
@@ -191,12 +221,12 @@ std::optional<SignedRings> visible_filtered(const Face& source, const IntervalPo
     IntervalRing shadow = part;
     bool whole = true;
     for (const IntervalPoint& side : *cone) {
-      const ClipResult result = clip(shadow, side);
+      const ClipResult result = clip(shadow, side, plane);
       if (result == ClipResult::uncertain) return std::nullopt;
       if (result == ClipResult::emptied) break;
       whole = whole && result == ClipResult::unchanged;
     }
-    if (shadow.empty()) continue;
+    if (shadow.vertex.empty()) continue;
     // One occluder hides all of it (the usual umbra): nothing is visible, exactly 0.
     if (whole) return SignedRings{};
     hidden.push_back(std::move(shadow));
@@ -205,12 +235,13 @@ std::optional<SignedRings> visible_filtered(const Face& source, const IntervalPo
   // The rings become doubles to integrate, as the exact path's do, when their vertices are
   // known to within 1e-10 of the part's size.
   double size = 0;
-  for (const IntervalPoint& q : part)
-    for (int i = 0; i < 3; ++i) size = std::max(size, std::abs(q[i].inf() - part[0][i].inf()));
+  for (const IntervalPoint& q : part.vertex)
+    for (int i = 0; i < 3; ++i)
+      size = std::max(size, std::abs(q[i].inf() - part.vertex[0][i].inf()));
   SignedRings rings;
   const auto keep = [&](const IntervalRing& ring, bool negative) {
     rings.push_back({{}, negative});
-    for (const IntervalPoint& q : ring) {
+    for (const IntervalPoint& q : ring.vertex) {
       for (int i = 0; i < 3; ++i)
         if (!(q[i].sup() - q[i].inf() <= 1e-10 * size)) return false;
       rings.back().ring.push_back(
@@ -219,16 +250,17 @@ std::optional<SignedRings> visible_filtered(const Face& source, const IntervalPo
     return true;
   };
   // part - sum H_i + sum H_i ^ H_j - ...: depth first over the subsets in increasing order,
-  // each intersection the previous one clipped by one more cone; an empty one ends a branch.
+  // each intersection the previous one clipped by one more cone (its vertices computed from
+  // their planes, not from the previous vertices); an empty one ends a branch.
   const auto add = [&](const auto& self, const IntervalRing& ring, std::size_t first,
                        std::size_t count) -> bool {
     for (std::size_t i = first; i < cones.size(); ++i) {
-      IntervalRing meet = count == 0 ? hidden[i] : ring;
-      for (std::size_t h = 0; count > 0 && h < cones[i].size() && !meet.empty(); ++h)
-        if (clip(meet, cones[i][h]) == ClipResult::uncertain) return false;
-      if (meet.empty()) continue;
-      if (rings.size() >= kMostTerms || !keep(meet, count % 2 == 0) ||
-          !self(self, meet, i + 1, count + 1))
+      IntervalRing both = count == 0 ? hidden[i] : ring;
+      for (std::size_t h = 0; count > 0 && h < cones[i].size() && !both.vertex.empty(); ++h)
+        if (clip(both, cones[i][h], plane) == ClipResult::uncertain) return false;
+      if (both.vertex.empty()) continue;
+      if (rings.size() >= kMostTerms || !keep(both, count % 2 == 0) ||
+          !self(self, both, i + 1, count + 1))
         return false;
     }
     return true;
