@@ -193,10 +193,17 @@ using SignedRings = boost::container::small_vector<SignedRing, 8>;
 // returns the signed convex parts whose sum is the visible part of source from P
 // (visible_source's), none when nothing is visible, or nothing at all when intervals cannot
 // certify a decision (then the exact path answers). Needs upward rounding.
+// An occluder that may hide part of the source, and whether it lies certainly strictly
+// between the source's plane and any point that side of the source lights.
+struct NearOccluder {
+  const ConvexPolyhedron* solid;
+  bool in_front;
+};
+
+using NearOccluders = boost::container::small_vector<NearOccluder, 16>;
+
 std::optional<SignedRings> visible_filtered(const Face& source, const IntervalPoint& p,
-                                            const Vec3d& normal,
-                                            const std::vector<const ConvexPolyhedron*>& near,
-                                            const std::vector<char>& in_front) {
+                                            const Vec3d& normal, const NearOccluders& near) {
   const auto& approx = source.plane.approx();
   const SourcePlane plane{{approx.a(), approx.b(), approx.c()}, -plane_value(approx, p)};
   IntervalRing part;
@@ -215,8 +222,8 @@ std::optional<SignedRings> visible_filtered(const Face& source, const IntervalPo
   boost::container::small_vector<IntervalRing, 8> hidden;
   for (std::size_t k = 0; k < near.size(); ++k) {
     // The cone is what it hides only when it lies between the source's plane and P.
-    if (!in_front[k]) return std::nullopt;
-    auto cone = cone_over(*near[k], p);
+    if (!near[k].in_front) return std::nullopt;
+    auto cone = cone_over(*near[k].solid, p);
     if (!cone) return std::nullopt;
     IntervalRing shadow = part;
     bool whole = true;
@@ -293,49 +300,43 @@ CachedArea detail::cache_area(const AreaLight& panel, const std::vector<Occluder
 
 double IlluminanceSolver::Impl::area_light(const CachedArea& panel, const QueryPoint& point,
                                            const Vec3d& normal, OccluderSubset subset) const {
-  // The side of the source turned toward the point (a one-sided source has one).
   const AreaLight& light = *panel.light;
   const Face* source = &light.polygon->faces()[light.front];
-  CGAL::Oriented_side side;
-  {
-    const CGAL::Protect_FPU_rounding<true> upward;
-    const Interval value = plane_value(source->plane.approx(), point.doubles());
-    side = value.inf() > 0   ? CGAL::ON_POSITIVE_SIDE
-           : value.sup() < 0 ? CGAL::ON_NEGATIVE_SIDE
-                             : source->plane.oriented_side(point.exact());
-  }
-  if (side != CGAL::ON_POSITIVE_SIDE) {
-    if (!light.two_sided || side == CGAL::ON_ORIENTED_BOUNDARY) return 0;
-    source = &light.polygon->faces()[1 - light.front];
-  }
-  // The occluders whose box meets the box of the point and the source: a superset of those
-  // that meet conv(point, source).
-  Box reach = panel.box;
-  for (int i = 0; i < 3; ++i) {
-    reach.low[i] = std::min(reach.low[i], point.doubles()[i]);
-    reach.high[i] = std::max(reach.high[i], point.doubles()[i]);
-  }
-  // Only an occluder meeting the pyramid conv(point, source) can hide part of it: those whose
-  // box one of the pyramid's planes certainly separates from it are skipped here; both paths
-  // clip the others, visible_source after its own test of the solid.
-  std::vector<const ConvexPolyhedron*> near;
-  std::vector<char> in_front;  // of each near one
+  NearOccluders near;
   std::optional<SignedRings> parts;
   {
     const CGAL::Protect_FPU_rounding<true> upward;
+    // The side of the source turned toward the point (a one-sided source has one).
+    const Interval value = plane_value(source->plane.approx(), point.doubles());
+    const CGAL::Oriented_side side = value.inf() > 0   ? CGAL::ON_POSITIVE_SIDE
+                                     : value.sup() < 0 ? CGAL::ON_NEGATIVE_SIDE
+                                                       : source->plane.oriented_side(point.exact());
+    if (side != CGAL::ON_POSITIVE_SIDE) {
+      if (!light.two_sided || side == CGAL::ON_ORIENTED_BOUNDARY) return 0;
+      source = &light.polygon->faces()[1 - light.front];
+    }
+    const std::vector<char>& in_front =
+        panel.in_front[source == &light.polygon->faces()[0] ? 0 : 1];
+    // The occluders whose box meets the box of the point and the source (a superset of those
+    // that meet conv(point, source)), less those whose box one of the pyramid's planes
+    // certainly separates from it; both paths clip the others, visible_source after its own
+    // test of the solid.
+    Box reach = panel.box;
+    for (int i = 0; i < 3; ++i) {
+      reach.low[i] = std::min(reach.low[i], point.doubles()[i]);
+      reach.high[i] = std::max(reach.high[i], point.doubles()[i]);
+    }
     const IntervalPoint p{Interval(point.doubles()[0]), Interval(point.doubles()[1]),
                           Interval(point.doubles()[2])};
     std::optional<Pyramid> pyramid;
     any_occluder(occluders.size(), subset, [&](std::size_t k) {
       if (!overlap(occluders[k].box, reach)) return false;
       if (!pyramid) pyramid = pyramid_over(*source, p);
-      if (!outside(*pyramid, occluders[k].box, p)) {
-        near.push_back(occluders[k].solid);
-        in_front.push_back(panel.in_front[source == &light.polygon->faces()[0] ? 0 : 1][k]);
-      }
+      if (!outside(*pyramid, occluders[k].box, p))
+        near.push_back({occluders[k].solid, in_front[k] != 0});
       return false;
     });
-    parts = visible_filtered(*source, p, normal, near, in_front);
+    parts = visible_filtered(*source, p, normal, near);
   }
   // Lambert's closed form over the visible part's boundary: rings counter-clockwise in the
   // source's frame are counter-clockwise seen from the point (area_source.h), and the edge sum
@@ -348,9 +349,11 @@ double IlluminanceSolver::Impl::area_light(const CachedArea& panel, const QueryP
                projected_solid_angle({0, 0, 0}, normal, part.ring.data(), part.ring.size());
     return light.luminance * omega;
   }
+  std::vector<const ConvexPolyhedron*> solids;
+  for (const NearOccluder& occluder : near) solids.push_back(occluder.solid);
   std::vector<std::vector<Vec3d>> rings;
   for (const Ring2& ring : visible_source(*source, point.exact(),
-                                          Plane3(point.exact(), to_exact_vector(normal)), near)) {
+                                          Plane3(point.exact(), to_exact_vector(normal)), solids)) {
     rings.emplace_back();
     for (const Point2& q : ring) rings.back().push_back(to_double(source->frame.to_world(q)));
   }

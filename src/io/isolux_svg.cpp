@@ -202,7 +202,8 @@ void write_isolux_svg(std::ostream& out, const Scene& scene,
   }
   out << "</g>\n";
 
-  // Lights in plan: point lights as circles, tubes as bars, the sun as an arrow.
+  // Lights in plan: point lights as circles, tubes as bars, area sources as their polygons
+  // (a vertical panel is drawn as the line it projects to), the sun as an arrow.
   out << "<g id=\"lights\" font-size=\"10\">\n";
   for (const Light& light : scene.lights) {
     if (const auto* point = std::get_if<PointLight>(&light.source)) {
@@ -222,6 +223,18 @@ void write_isolux_svg(std::ostream& out, const Scene& scene,
           << svg_number(sx((tube->start[0] + tube->end[0]) / 2)) << "\" y=\""
           << svg_number(sy((tube->start[1] + tube->end[1]) / 2) - 8) << "\" text-anchor=\"middle\">"
           << escape_xml(light.name) << "</text>\n";
+    } else if (const auto* panel = std::get_if<AreaLight>(&light.source)) {
+      out << "<polygon points=\"";
+      double cx = 0, cy = 0;
+      for (std::size_t k = 0; k < panel->vertices.size(); ++k) {
+        const Vec3d& q = panel->vertices[k];
+        out << (k ? " " : "") << svg_number(sx(q[0])) << "," << svg_number(sy(q[1]));
+        cx += sx(q[0]) / panel->vertices.size();
+        cy += sy(q[1]) / panel->vertices.size();
+      }
+      out << "\" fill=\"#fff6a0\" stroke=\"black\"/>\n<text x=\"" << svg_number(cx) << "\" y=\""
+          << svg_number(cy + 3.5) << "\" text-anchor=\"middle\">" << escape_xml(light.name)
+          << "</text>\n";
     }
   }
   out << "</g>\n";

@@ -1,5 +1,6 @@
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -108,6 +109,34 @@ BOOST_AUTO_TEST_CASE(isolux_lines_of_a_radial_field_are_circles) {
   BOOST_TEST(polylines == lines.size());
   BOOST_TEST(text.find(">70</text>") != std::string::npos);
   BOOST_TEST(text.find("id=\"legend\"") != std::string::npos);
+}
+
+// An area source is drawn in plan as its polygon, named; its corner (1.5, 1.5) lands where a
+// point lamp placed there is drawn (the same plan transform).
+BOOST_AUTO_TEST_CASE(area_sources_are_drawn_as_their_polygons) {
+  const Scene scene = parse_scene(
+      R"({"penumbra": 1, "objects": [],
+          "lights": [{"name": "troffer", "area": [[1.5,1.5,3],[1.5,2.5,3],[2.5,2.5,3],[2.5,1.5,3]],
+                      "luminance": 1000},
+                     {"name": "mark", "point": [1.5, 1.5, 3], "candela": 1}]})",
+      "area-plan.json");
+  const WorkplaneValues values =
+      evaluate_workplane(IlluminanceSolver(scene), make_workplane_grid(0, 0.1, {0, 0, 4, 4}));
+  std::ostringstream svg;
+  io::write_isolux_svg(svg, scene, values, {50, 100});
+  const std::string text = svg.str();
+  const std::string tag = "<polygon points=\"";
+  const std::size_t polygon = text.find(tag) + tag.size();
+  BOOST_TEST_REQUIRE(polygon != std::string::npos + tag.size());
+  const std::string points = text.substr(polygon, text.find('"', polygon) - polygon);
+  const std::size_t circle = text.find("<circle cx=\"");
+  BOOST_TEST_REQUIRE(circle != std::string::npos);
+  const std::size_t cx = circle + 12, cy = text.find("cy=\"", cx) + 4;
+  const std::string corner =
+      text.substr(cx, text.find('"', cx) - cx) + "," + text.substr(cy, text.find('"', cy) - cy);
+  BOOST_TEST(points.substr(0, corner.size()) == corner, points << " against " << corner);
+  BOOST_TEST(std::count(points.begin(), points.end(), ',') == 4);
+  BOOST_TEST(text.find(">troffer</text>") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(levels_are_nice_numbers) {
