@@ -47,11 +47,18 @@ struct IntervalRing {
   boost::container::small_vector<IntervalPoint, 12> vertex, edge;
 };
 
-// The source's plane relative to P: n . q = offset.
+// The source's plane relative to P: n . q = offset, n its outward normal: P (q = 0) has
+// n . q > offset, and the whole pyramid conv(P, source) n . q >= offset.
 struct SourcePlane {
   IntervalPoint normal;
   Interval offset;
 };
+
+// Needs upward rounding.
+SourcePlane source_plane(const Face& source, const IntervalPoint& p) {
+  const auto& plane = source.plane.approx();
+  return {{plane.a(), plane.b(), plane.c()}, -plane_value(plane, p)};
+}
 
 // returns the point of the source's plane on the planes through P with normals a and b.
 // Needs upward rounding.
@@ -131,54 +138,47 @@ std::optional<Cone> cone_over(const ConvexPolyhedron& solid, const IntervalPoint
   return cone;
 }
 
-// The closed pyramid conv(P, source), for culling boxes: the planes through P and the source's
-// edges (the source seen from P as a face is seen: cone_over's formula; it lies on their
-// closed positive sides) and, last as it seldom separates anything, the source's plane.
-struct Pyramid {
-  Cone sides;
-  IntervalPoint source_normal, source_point;
-};
-
-Pyramid pyramid_over(const Face& source, const IntervalPoint& p) {
-  Pyramid pyramid;
+// The planes through P and the source's edges, edge k (from vertex k to k + 1) first: the
+// source seen from P as a face is seen (cone_over's formula), so the pyramid conv(P, source)
+// lies on their closed positive sides. Needs upward rounding.
+Cone edge_planes(const Face& source, const IntervalPoint& p) {
+  Cone planes;
   const std::size_t n = source.vertices.size();
   for (std::size_t k = 0; k < n; ++k)
-    pyramid.sides.push_back(
-        cross(from(p, source.vertices[(k + 1) % n]), from(p, source.vertices[k])));
-  const auto& plane = source.plane.approx();
-  pyramid.source_normal = {plane.a(), plane.b(), plane.c()};
-  pyramid.source_point = from(p, source.vertices[0]);
-  return pyramid;
+    planes.push_back(cross(from(p, source.vertices[(k + 1) % n]), from(p, source.vertices[k])));
+  return planes;
 }
 
 // returns true when the box (given relative to P by its corners low and high) is certainly
-// strictly outside the closed half-space normal . (q - origin) >= 0: the greatest value over
-// the box, the sum over the axes of the greater of its two ends' terms, is certainly
-// negative. Needs upward rounding.
+// strictly outside the closed half-space normal . q >= offset: the greatest value of
+// normal . q over the box, the sum over the axes of the greater of its two ends' terms, is
+// certainly below offset. Needs upward rounding.
 bool outside(const IntervalPoint& low, const IntervalPoint& high, const IntervalPoint& normal,
-             const IntervalPoint* origin = nullptr) {
+             const Interval& offset = Interval(0)) {
   double greatest = 0;
   for (int i = 0; i < 3; ++i) {
     // A certainly positive (negative) coefficient is greatest at the upper (lower) end.
     const Interval& n = normal[i];
-    const auto term = [&](const Interval& end) {
-      return (n * (origin ? end - (*origin)[i] : end)).sup();
-    };
+    const auto term = [&](const Interval& end) { return (n * end).sup(); };
     greatest += n.inf() >= 0   ? term(high[i])
                 : n.sup() <= 0 ? term(low[i])
                                : std::max(term(low[i]), term(high[i]));
   }
-  return greatest < 0;
+  return greatest < offset.inf();
 }
 
-bool outside(const Pyramid& pyramid, const Box& box, const IntervalPoint& p) {
+// returns true when one plane of the closed pyramid conv(P, source) certainly has the box
+// strictly outside: a side (edge_planes), or last, as it seldom separates anything, the
+// source's plane. Needs upward rounding.
+bool outside_pyramid(const Cone& sides, const SourcePlane& base, const Box& box,
+                     const IntervalPoint& p) {
   const IntervalPoint low{Interval(box.low[0]) - p[0], Interval(box.low[1]) - p[1],
                           Interval(box.low[2]) - p[2]};
   const IntervalPoint high{Interval(box.high[0]) - p[0], Interval(box.high[1]) - p[1],
                            Interval(box.high[2]) - p[2]};
-  return std::any_of(pyramid.sides.begin(), pyramid.sides.end(),
+  return std::any_of(sides.begin(), sides.end(),
                      [&](const IntervalPoint& normal) { return outside(low, high, normal); }) ||
-         outside(low, high, pyramid.source_normal, &pyramid.source_point);
+         outside(low, high, base.normal, base.offset);
 }
 
 // A convex part of the visible part's signed sum, relative to P in doubles: counted once, or
@@ -190,11 +190,8 @@ struct SignedRing {
 
 using SignedRings = boost::container::small_vector<SignedRing, 8>;
 
-// returns the signed convex parts whose sum is the visible part of source from P
-// (visible_source's), none when nothing is visible, or nothing at all when intervals cannot
-// certify a decision (then the exact path answers). Needs upward rounding.
-// An occluder that may hide part of the source, and whether it lies certainly strictly
-// between the source's plane and any point that side of the source lights.
+// An occluder that may hide part of the source, and whether its vertices all lie certainly
+// strictly on the lit side of the source's plane (CachedArea::in_front).
 struct NearOccluder {
   const ConvexPolyhedron* solid;
   bool in_front;
@@ -202,16 +199,16 @@ struct NearOccluder {
 
 using NearOccluders = boost::container::small_vector<NearOccluder, 16>;
 
+// returns the signed convex parts whose sum is the visible part of source from P
+// (visible_source's), none when nothing is visible, or nothing at all when intervals cannot
+// certify a decision (then the exact path answers). edges: edge_planes(source, p); plane:
+// source_plane(source, p). Needs upward rounding.
 std::optional<SignedRings> visible_filtered(const Face& source, const IntervalPoint& p,
+                                            const Cone& edges, const SourcePlane& plane,
                                             const Vec3d& normal, const NearOccluders& near) {
-  const auto& approx = source.plane.approx();
-  const SourcePlane plane{{approx.a(), approx.b(), approx.c()}, -plane_value(approx, p)};
   IntervalRing part;
-  const std::size_t n = source.vertices.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    part.vertex.push_back(from(p, source.vertices[k]));
-    part.edge.push_back(cross(from(p, source.vertices[k]), from(p, source.vertices[(k + 1) % n])));
-  }
+  for (const Point3& q : source.vertices) part.vertex.push_back(from(p, q));
+  part.edge.assign(edges.begin(), edges.end());
   // Fig. 7, S3: the receiving surface hides the part of the source not strictly on its outer
   // side.
   if (clip(part, {Interval(normal[0]), Interval(normal[1]), Interval(normal[2])}, plane) ==
@@ -221,8 +218,6 @@ std::optional<SignedRings> visible_filtered(const Face& source, const IntervalPo
   boost::container::small_vector<Cone, 8> cones;
   boost::container::small_vector<IntervalRing, 8> hidden;
   for (std::size_t k = 0; k < near.size(); ++k) {
-    // The cone is what it hides only when it lies between the source's plane and P.
-    if (!near[k].in_front) return std::nullopt;
     auto cone = cone_over(*near[k].solid, p);
     if (!cone) return std::nullopt;
     IntervalRing shadow = part;
@@ -233,7 +228,11 @@ std::optional<SignedRings> visible_filtered(const Face& source, const IntervalPo
       if (result == ClipResult::emptied) break;
       whole = whole && result == ClipResult::unchanged;
     }
+    // The cone holds every point the occluder hides; it is what the occluder hides when the
+    // occluder lies on the lit side of the source's plane (a point v of it on the ray from P
+    // through q is then between P and q).
     if (shadow.vertex.empty()) continue;
+    if (!near[k].in_front) return std::nullopt;
     // One occluder hides all of it (the usual umbra): nothing is visible, exactly 0.
     if (whole) return SignedRings{};
     hidden.push_back(std::move(shadow));
@@ -328,26 +327,27 @@ double IlluminanceSolver::Impl::area_light(const CachedArea& panel, const QueryP
     }
     const IntervalPoint p{Interval(point.doubles()[0]), Interval(point.doubles()[1]),
                           Interval(point.doubles()[2])};
-    std::optional<Pyramid> pyramid;
+    const Cone edges = edge_planes(*source, p);
+    const SourcePlane plane = source_plane(*source, p);
     any_occluder(occluders.size(), subset, [&](std::size_t k) {
-      if (!overlap(occluders[k].box, reach)) return false;
-      if (!pyramid) pyramid = pyramid_over(*source, p);
-      if (!outside(*pyramid, occluders[k].box, p))
+      if (overlap(occluders[k].box, reach) && !outside_pyramid(edges, plane, occluders[k].box, p))
         near.push_back({occluders[k].solid, in_front[k] != 0});
       return false;
     });
-    parts = visible_filtered(*source, p, normal, near);
+    parts = visible_filtered(*source, p, edges, plane, normal, near);
   }
   // Lambert's closed form over the visible part's boundary: rings counter-clockwise in the
   // source's frame are counter-clockwise seen from the point (area_source.h), and the edge sum
   // of a clockwise ring is negative: the signed sum over visible_source's rings is the visible
   // part's.
+  // The signed sum of parts that cancel (a source hidden by several occluders together) may
+  // round below 0; the visible part's measure is not negative.
   if (parts) {
     double omega = 0;
     for (const SignedRing& part : *parts)
       omega += (part.negative ? -1 : 1) *
                projected_solid_angle({0, 0, 0}, normal, part.ring.data(), part.ring.size());
-    return light.luminance * omega;
+    return light.luminance * std::max(0.0, omega);
   }
   std::vector<const ConvexPolyhedron*> solids;
   for (const NearOccluder& occluder : near) solids.push_back(occluder.solid);
@@ -357,7 +357,7 @@ double IlluminanceSolver::Impl::area_light(const CachedArea& panel, const QueryP
     rings.emplace_back();
     for (const Point2& q : ring) rings.back().push_back(to_double(source->frame.to_world(q)));
   }
-  return light.luminance * projected_solid_angle(point.doubles(), normal, rings);
+  return light.luminance * std::max(0.0, projected_solid_angle(point.doubles(), normal, rings));
 }
 
 }  // namespace penumbra::illuminance

@@ -204,7 +204,12 @@ void write_isolux_svg(std::ostream& out, const Scene& scene,
 
   // Lights in plan: point lights as circles, tubes as bars, area sources as their polygons
   // (a vertical panel is drawn as the line it projects to), the sun as an arrow.
-  out << "<g id=\"lights\" font-size=\"10\">\n";
+  // Clipped to the plot: a light beyond the region (a panel wider than the objects' box) must
+  // not run over the legend.
+  out << "<clipPath id=\"plot\"><rect x=\"" << svg_number(margin) << "\" y=\"" << svg_number(margin)
+      << "\" width=\"" << svg_number(plot_width) << "\" height=\"" << svg_number(plot_depth)
+      << "\"/></clipPath>\n"
+      << "<g id=\"lights\" font-size=\"10\" clip-path=\"url(#plot)\">\n";
   for (const Light& light : scene.lights) {
     if (const auto* point = std::get_if<PointLight>(&light.source)) {
       const double x = sx(point->position[0]), y = sy(point->position[1]);

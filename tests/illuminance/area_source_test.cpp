@@ -348,6 +348,25 @@ BOOST_AUTO_TEST_CASE(occluded_points_against_row_quadrature) {
   BOOST_TEST(shaded >= 4);  // the points test occlusion, not only the open panel
 }
 
+// Two boxes that hide the panel together, neither alone: from below (1, 1, 0) box A hides the
+// panel's x <= 1 + 0.05 * 3 / 1.4 = 1.107 and box B its x >= 1 - 0.05 * 3 / 1.4 = 0.893, both
+// all of its y (their bottoms at 1.4 m, under the panel at 3 m, scale by 3 / 1.4). The
+// inclusion and exclusion sum P - A - B + AB is 0; rounding must not make the lux negative.
+BOOST_AUTO_TEST_CASE(a_source_hidden_by_two_occluders_together_gives_zero_not_less) {
+  const Scene scene = scene_from(
+      R"({"name": "a", "box": {"min": [0.2, 0.2, 1.4], "max": [1.05, 1.8, 1.6]}},
+         {"name": "b", "box": {"min": [0.95, 0.2, 1.4], "max": [1.8, 1.8, 1.6]}})",
+      panel({0, 0, 3}, {0, 2, 0}, {2, 0, 0}, 1000));
+  const IlluminanceSolver solver(scene);
+  std::mt19937 random(55);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  for (int k = 0; k < 200; ++k) {
+    const double e = solver.at({1 + jitter(random), 1 + jitter(random), 0}, {0, 0, 1}).total;
+    BOOST_TEST(e >= 0.0, "point " << k << ": " << e);
+    BOOST_TEST(e <= 1e-9, "point " << k << ": " << e);
+  }
+}
+
 // The solver decides the visible part in intervals when they are certain (area_visibility.cpp)
 // and exactly otherwise: its value must be Lambert's sum over the exact visible part
 // (visible_source, rationals throughout) to rounding, at random points with random receiving

@@ -137,6 +137,9 @@ BOOST_AUTO_TEST_CASE(area_sources_are_drawn_as_their_polygons) {
   BOOST_TEST(points.substr(0, corner.size()) == corner, points << " against " << corner);
   BOOST_TEST(std::count(points.begin(), points.end(), ',') == 4);
   BOOST_TEST(text.find(">troffer</text>") != std::string::npos);
+  // Lights are clipped to the plot (a panel beyond the region must not cover the legend).
+  BOOST_TEST(text.find("<g id=\"lights\" font-size=\"10\" clip-path=\"url(#plot)\">") !=
+             std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(levels_are_nice_numbers) {
