@@ -34,6 +34,7 @@ int run_check(const std::string& scene_path, const std::string& golden_path,
     options.range_fraction = culling.value("range_fraction", options.range_fraction);
     options.full_scale_lux = culling.value("full_scale_lux", options.full_scale_lux);
   }
+  options.joint_umbrae = golden.value("joint_umbrae", false);
   const io::ShadowJsonOptions json_options = io::json_options_of(options, true);
   std::set<std::string> lights;
   if (golden.contains("lights") && golden["lights"].is_array())

@@ -33,6 +33,7 @@ struct RenderArguments {
   int interval = 3;
   std::string exposure = "auto";
   bool isolux = false;
+  bool joint_umbrae = false;
   std::string levels;
   std::string values;
   int width = 0;
@@ -104,7 +105,7 @@ int run_render(RenderArguments& args) {
   if (wants_indirect(args.indirect, scene, args.radiosity))
     indirect.emplace(basis::solve_scene_radiosity(scene, args.radiosity.options));
   const auto solved = std::chrono::steady_clock::now();
-  const render::ScanlineRenderer renderer(scene, camera);
+  const render::ScanlineRenderer renderer(scene, camera, true, args.joint_umbrae);
   const auto prepared = std::chrono::steady_clock::now();
   render::RenderOptions options;
   options.interval = args.interval;
@@ -209,6 +210,9 @@ void register_render(CLI::App& app) {
         return parse_exposure(text) < 0 ? "expected 'auto' or a positive number" : "";
       });
   verb->add_flag("--isolux", args->isolux, "superimpose isolux colour belts and a legend");
+  verb->add_flag("--joint-umbrae", args->joint_umbrae,
+                 "tubes: keep evaluation points on both sides of the exact umbrae's curved "
+                 "edges where occluders hide a tube together (shadows --joint-umbrae)");
   verb->add_option("--levels", args->levels,
                    "isolux levels in lux, e.g. 100,200,500 (default: chosen)");
   verb->add_option("--values", args->values, "CSV of px,py,object,face,E,L,E_indirect per pixel");

@@ -153,10 +153,48 @@ void emit_arcs(JsonEmitter& out, const CurvedRing& ring) {
   out.end_array();
 }
 
+void emit_coordinate(JsonEmitter& out, const AlgebraicCoordinate& x) {
+  if (x.value) {
+    out.string(rational_string(*x.value));
+    return;
+  }
+  out.begin_object();
+  out.key("of");
+  out.begin_array();
+  for (const Exact& c : x.polynomial) out.string(rational_string(c));
+  out.end_array();
+  out.key("root");
+  out.integer(static_cast<std::size_t>(x.root));
+  out.end_object();
+}
+
+void emit_exact_ring(JsonEmitter& out, const std::vector<ExactEdge>& ring) {
+  out.begin_array();
+  for (const ExactEdge& edge : ring) {
+    out.begin_object();
+    out.key("conic");
+    out.begin_array();
+    for (const Exact& c : edge.curve) out.string(rational_string(c));
+    out.end_array();
+    out.key("from");
+    out.begin_object();
+    out.key("s");
+    emit_coordinate(out, edge.from.s);
+    out.key("t");
+    emit_coordinate(out, edge.from.t);
+    out.end_object();
+    out.key("joint");
+    out.boolean(edge.joint);
+    out.end_object();
+  }
+  out.end_array();
+}
+
 }  // namespace
 
 void emit_curved_region(JsonEmitter& out, const std::vector<CurvedPolygon>& polygons,
-                        double frame_area, const FaceOutput& face) {
+                        double frame_area, const FaceOutput& face,
+                        const std::vector<ExactCurvedPolygon>* exact) {
   const FaceFrame& frame = face.face.frame;
   out.begin_object();
   out.key("area");
@@ -174,6 +212,21 @@ void emit_curved_region(JsonEmitter& out, const std::vector<CurvedPolygon>& poly
     out.end_array();
   }
   out.end_object();
+  if (exact) {
+    out.key("exact");
+    out.begin_array();
+    for (const ExactCurvedPolygon& polygon : *exact) {
+      out.begin_object();
+      out.key("holes");
+      out.begin_array();
+      for (const auto& hole : polygon.holes) emit_exact_ring(out, hole);
+      out.end_array();
+      out.key("outer");
+      emit_exact_ring(out, polygon.outer);
+      out.end_object();
+    }
+    out.end_array();
+  }
   out.key("polygons");
   out.begin_array();
   for (const CurvedPolygon& polygon : polygons) {

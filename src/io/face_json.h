@@ -59,8 +59,14 @@ void emit_polygons(JsonEmitter& out, const Region2& region, const FaceOutput& fa
 // a s^2 + b s t + c t^2 + d s + e t + f = 0, "first", "joint", "last"} in the exact frame
 // that axes gives (origin + s u + t v, rationals); points first..last lie on the arc, and
 // last may be the ring's length: the arc ends at its first point.
+// With exact, "exact" lists the region's polygons in canonical form (ExactCurvedPolygon):
+// {"holes": [ring, ...], "outer": ring}, a ring a list of edges {"conic": six rationals,
+// normalised, "from": corner, "joint"}, a corner {"s": x, "t": x} where x is "p/q" or
+// {"of": [integer coefficients, lowest degree first], "root": k} (the k-th real root from 0,
+// increasing): what `check` compares.
 void emit_curved_region(JsonEmitter& out, const std::vector<CurvedPolygon>& polygons,
-                        double frame_area, const FaceOutput& face);
+                        double frame_area, const FaceOutput& face,
+                        const std::vector<ExactCurvedPolygon>* exact = nullptr);
 // the plane scaled to a unit normal, in doubles; exactly, scaled so that its largest
 // normal component has magnitude 1 (a canonical exact form).
 void emit_plane(JsonEmitter& out, const Plane3& plane, bool exact);

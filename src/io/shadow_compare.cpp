@@ -23,12 +23,11 @@ class Comparison {
     return node.at(key);
   }
 
-  // the exact rings of a region, or of an occluder ("polygon").
+  // the exact rings of a region, or of an occluder ("polygon"); of a curved region (shadows
+  // --joint-umbrae), its canonical exact polygons (docs/shadows.md).
   json exact_region(const json& region, const std::string& path) const {
     if (region.is_object() && region.contains("axes"))
-      throw InputError(file_, path,
-                       "a curved region (shadows --joint-umbrae): check cannot compare conic "
-                       "edges yet (docs/shadows.md)");
+      return json{{"curved", need(region, "exact", path)}};
     json rings = json::array();
     const json& polygons = need(region, "polygons", path);
     for (std::size_t k = 0; k < polygons.size(); ++k)

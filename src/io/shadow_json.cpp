@@ -92,6 +92,7 @@ json shadow_header_json(const Scene& scene, const ShadowResult& result,
                   {"full_scale_lux", options.full_scale_lux}};
   if (options.range_lux) culling = {{"range_lux", *options.range_lux}};
   document["culling"] = culling;
+  if (options.joint_umbrae) document["joint_umbrae"] = true;
 
   json lights = json::array();
   for (const LightShadows& shadows : result.lights) {
@@ -211,8 +212,10 @@ void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& sha
   out.end_array();
   out.key("penumbra");
   if (shadow.curved) {
+    const auto polygons =
+        exact ? shadow.curved->exact_penumbra_polygons() : std::vector<ExactCurvedPolygon>{};
     emit_curved_region(out, shadow.curved->penumbra_polygons(), shadow.curved->penumbra_area(),
-                       face);
+                       face, exact ? &polygons : nullptr);
   } else if (shadow.extended) {
     emit_region(out, shadow.penumbra, face, exact);
   } else {  // point and directional sources: no penumbra
@@ -225,9 +228,12 @@ void emit_light(JsonEmitter& out, const std::string& name, const FaceShadow& sha
     out.boolean(shadow.source_clipped);
   }
   out.key("umbra");
-  if (shadow.curved)
-    emit_curved_region(out, shadow.curved->umbra_polygons(), shadow.curved->area(), face);
-  else
+  if (shadow.curved) {
+    const auto polygons =
+        exact ? shadow.curved->exact_umbra_polygons() : std::vector<ExactCurvedPolygon>{};
+    emit_curved_region(out, shadow.curved->umbra_polygons(), shadow.curved->area(), face,
+                       exact ? &polygons : nullptr);
+  } else
     emit_region(out, shadow.extended ? shadow.umbra : shadow.shadow, face, exact);
   out.end_object();
 }
@@ -320,6 +326,7 @@ ShadowJsonOptions json_options_of(const ShadowOptions& options, bool exact) {
   json_options.range_fraction = options.range_fraction;
   json_options.full_scale_lux = options.full_scale_lux;
   json_options.range_lux = options.range_lux;
+  json_options.joint_umbrae = options.joint_umbrae;
   return json_options;
 }
 

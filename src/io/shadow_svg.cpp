@@ -18,7 +18,8 @@ using namespace vector_ops;
 const char* const palette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
 
 std::optional<FaceDrawing> draw_face(const json& face, const std::vector<std::string>& lights,
-                                     const Projection& project, double depth, bool loops) {
+                                     const Projection& project, double depth, bool loops,
+                                     bool affine) {
   FaceDrawing drawing{depth, {}};
   const auto rings = boundary_rings(face);
   const auto outline = project_ring(*rings.front(), project);
@@ -36,8 +37,8 @@ std::optional<FaceDrawing> draw_face(const json& face, const std::vector<std::st
     // the umbra is the whole shadow).
     const std::string fill = "fill=\"" + colour + "\" fill-rule=\"evenodd\" stroke=\"" + colour +
                              "\" stroke-width=\"0.5\" fill-opacity=";
-    add_region(drawing, light.at("penumbra"), fill + "\"0.2\"", project);
-    add_region(drawing, light.at("umbra"), fill + "\"0.55\"", project);
+    add_region(drawing, light.at("penumbra"), fill + "\"0.2\"", project, affine);
+    add_region(drawing, light.at("umbra"), fill + "\"0.55\"", project, affine);
     if (!loops) continue;
     // The raw loops of a linear source (section 4.1.2), with arrows along their
     // direction, so that a twisted umbra loop and its clockwise part show.
@@ -123,7 +124,8 @@ void ShadowSvgWriter::face(const json& face) {
   Drawing& d = *drawing_;
   if (view_ != SvgView::faces) {
     if (const auto depth = d.depth_of(face))
-      if (auto drawing = draw_face(face, d.lights, d.project, *depth, loops_))
+      if (auto drawing =
+              draw_face(face, d.lights, d.project, *depth, loops_, view_ == SvgView::top))
         d.drawings.push_back(std::move(*drawing));
     return;
   }
@@ -142,7 +144,7 @@ void ShadowSvgWriter::face(const json& face) {
          << "\" font-family=\"sans-serif\" font-size=\"12\">"
          << escape_xml(face.at("object").get<std::string>()) << " face "
          << face.at("face").get<int>() << "</text>\n";
-  if (auto drawing = draw_face(face, d.lights, project, 0, loops_))
+  if (auto drawing = draw_face(face, d.lights, project, 0, loops_, true))
     emit(d.body, {*drawing}, x0 + 10, y0 + 24, panel - 20, panel - 34, true);
   d.body << "</g>\n";
   ++d.panels;

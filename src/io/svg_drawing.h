@@ -23,9 +23,19 @@ using Flat = std::array<double, 2>;
 // nullopt when a point cannot be drawn (behind the camera).
 using Projection = std::function<std::optional<Flat>(const Vec3d&)>;
 
+// An arc of an ellipse along a ring, in drawing coordinates: the ring's points first..last
+// lie on (p - centre)^T Q (p - centre) = 1, Q = {{form[0], form[1]}, {form[1], form[2]}}
+// positive definite (last may be the ring's size: the arc ends at its first point).
+struct EllipseArc {
+  std::size_t first, last;
+  Flat centre;
+  std::array<double, 3> form;
+};
+
 struct Shape {
   std::vector<std::vector<Flat>> rings;
   std::string style;
+  std::vector<std::vector<EllipseArc>> arcs{};  // per ring (or none): drawn as SVG arcs
 };
 
 // a face's drawing: its outline and what is drawn on it.
@@ -39,9 +49,11 @@ struct FaceDrawing {
 std::optional<std::vector<Flat>> project_ring(const nlohmann::json& ring,
                                               const Projection& project);
 
-// appends the filled polygons of a region ({"polygons": [...]}) in the given style.
+// appends the filled polygons of a region ({"polygons": [...]}) in the given style. For a
+// curved region (shadows --joint-umbrae: "axes", "arcs") under an affine projection, the
+// arcs of ellipses are kept as such (EllipseArc), the other conics stay densified.
 void add_region(FaceDrawing& drawing, const nlohmann::json& region, const std::string& style,
-                const Projection& project);
+                const Projection& project, bool affine = false);
 
 // the plan view: (x, y).
 Projection plan_projection();
@@ -58,7 +70,8 @@ struct Bounds {
 Bounds bounds_of(const std::vector<FaceDrawing>& drawings);
 
 // fits the drawings into a box of the given size (y up in the drawings, down in SVG) and
-// writes them as paths, farthest first.
+// writes them as paths, farthest first: each EllipseArc as an SVG elliptical arc ("A") when
+// every point of the ring along it lies within 0.01 px of that ellipse, otherwise as lines.
 void emit(std::ostream& out, std::vector<FaceDrawing> drawings, double x0, double y0, double width,
           double height, bool flip_y);
 

@@ -9,6 +9,7 @@
 #include "penumbra/base/progress.h"
 #include "penumbra/base/vec3d.h"
 #include "penumbra/illuminance/scene_illuminance.h"
+#include "penumbra/shadow/exact_umbra.h"
 #include "penumbra/shadow/face_shadow.h"
 #include "penumbra/shadow/shadow_map.h"
 
@@ -47,6 +48,25 @@ std::vector<std::size_t> shadowing_objects(const FaceShadow& map) {
   return objects;
 }
 
+// appends the edges of every ring of a curved region (exact_umbra.h: conic arcs densified
+// within 1e-6 m), carried from the face frame to the world.
+void append_boundary(const std::vector<CurvedPolygon>& polygons, const FaceFrame& frame,
+                     std::vector<Segment>& out) {
+  const Vec3d o = to_double(frame.origin()), u = to_double(frame.u()), v = to_double(frame.v());
+  const auto append_ring = [&](const CurvedRing& ring) {
+    const auto& p = ring.points;
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      const auto& a = p[k];
+      const auto& b = p[(k + 1) % p.size()];
+      out.push_back({o + a[0] * u + a[1] * v, o + b[0] * u + b[1] * v});
+    }
+  };
+  for (const CurvedPolygon& polygon : polygons) {
+    append_ring(polygon.outer);
+    for (const CurvedRing& hole : polygon.holes) append_ring(hole);
+  }
+}
+
 }  // namespace
 
 struct ScanlineRenderer::Impl {
@@ -61,13 +81,15 @@ struct ScanlineRenderer::Impl {
   std::vector<std::vector<std::vector<std::size_t>>> occluders;
   std::vector<FacePlane> planes;  // per receiver slot
   bool parallel;
+  bool joint_umbrae;
 
-  Impl(const Scene& scene_in, const Camera& camera, bool parallel_in)
+  Impl(const Scene& scene_in, const Camera& camera, bool parallel_in, bool joint_umbrae_in)
       : materials(scene_in.materials),
         view(camera),
         visibility(scanline_visibility(scene_in, camera, parallel_in)),
         solver(scene_in),
-        parallel(parallel_in) {
+        parallel(parallel_in),
+        joint_umbrae(joint_umbrae_in) {
     std::size_t slots = 0;
     for (const Object& object : scene_in.objects) {
       object_material.push_back(object.material);
@@ -94,7 +116,10 @@ struct ScanlineRenderer::Impl {
     if (map.faces_away) return;
     std::vector<Segment>& out = boundaries[face_slot];
     append_boundary(map.shadow, face.frame, out);
-    if (map.extended) append_boundary(map.umbra, face.frame, out);
+    if (map.curved)  // the exact umbra with joint parts: conic edges
+      append_boundary(map.curved->umbra_polygons(), face.frame, out);
+    else if (map.extended)
+      append_boundary(map.umbra, face.frame, out);
   }
 
   // Nishita 1985 section 4.2.2: the shadow, umbra (and so penumbra) boundaries of each
@@ -112,6 +137,7 @@ struct ScanlineRenderer::Impl {
         seen[slot(visibility.objects[pixel], visibility.faces[pixel])] = 1;
     ShadowOptions options;
     options.parallel = parallel;
+    options.joint_umbrae = joint_umbrae;
     options.occluders_beyond_range = true;
     options.unite_mesh_faces = false;  // the pieces are drawn
     options.receivers.emplace();
@@ -235,8 +261,9 @@ struct ScanlineRenderer::Impl {
   }
 };
 
-ScanlineRenderer::ScanlineRenderer(const Scene& scene, const Camera& camera, bool parallel)
-    : impl_(std::make_unique<Impl>(scene, camera, parallel)) {}
+ScanlineRenderer::ScanlineRenderer(const Scene& scene, const Camera& camera, bool parallel,
+                                   bool joint_umbrae)
+    : impl_(std::make_unique<Impl>(scene, camera, parallel, joint_umbrae)) {}
 
 ScanlineRenderer::~ScanlineRenderer() = default;
 

@@ -13,8 +13,6 @@
 // straight single shadows and umbrae, and inside the region W where occluders may hide the
 // source together by the union of the blocked intervals (interval filter, then exact).
 
-#include <CGAL/Algebraic_kernel_d_1.h>
-#include <CGAL/CORE_BigInt.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <algorithm>
@@ -22,10 +20,13 @@
 #include <functional>
 #include <map>
 #include <stdexcept>
+#include <tuple>
 
+#include "algebraic.h"
 #include "blocked_interval.h"
 #include "blocked_interval_filter.h"
 #include "convex_ring.h"
+#include "exact_corner.h"
 #include "pencil.h"
 #include "penumbra/base/gauss_legendre.h"
 #include "penumbra/geometry/interval.h"
@@ -45,72 +46,13 @@ using detail::Probe;
 using detail::Quadratic2;
 using detail::RationalVector2;
 
-using AK = CGAL::Algebraic_kernel_d_1<CORE::BigInt>;
-using Algebraic = AK::Algebraic_real_1;
-
-const AK& algebraic_kernel() {
-  static const AK kernel;
-  return kernel;
-}
-
-// the GMP value of a rational, whichever of CGAL's GMP rationals Epeck uses.
-[[maybe_unused]] mpq_srcptr gmp(const CGAL::Gmpq& x) {
-  return x.mpq();
-}
-#ifdef CGAL_USE_GMPXX
-[[maybe_unused]] mpq_srcptr gmp(const mpq_class& x) {
-  return x.get_mpq_t();
-}
-#endif
-
-CORE::BigRat bound(const Rational& x) {
-  return CORE::BigRat(gmp(x));
-}
-
-Rational rational(const CORE::BigRat& x) {
-  return Rational(x.get_mp());
-}
-
-Algebraic algebraic(const Rational& x) {
-  return Algebraic(bound(x));
-}
-
-// returns p with integer coefficients (times the common denominator): the same roots.
-AK::Polynomial_1 integer_polynomial(const Poly& p) {
-  mpz_t scale;
-  mpz_init_set_ui(scale, 1);
-  for (const Rational& c : p.c) mpz_lcm(scale, scale, mpq_denref(gmp(c)));
-  std::vector<CORE::BigInt> coefficients;
-  for (const Rational& c : p.c) {
-    mpz_t n;
-    mpz_init(n);
-    mpz_divexact(n, scale, mpq_denref(gmp(c)));
-    mpz_mul(n, n, mpq_numref(gmp(c)));
-    coefficients.emplace_back(n);
-    mpz_clear(n);
-  }
-  mpz_clear(scale);
-  return AK::Polynomial_1(coefficients.begin(), coefficients.end());
-}
-
-// the real roots of p, increasing (none for a constant or zero p).
-std::vector<Algebraic> all_roots(const Poly& p) {
-  std::vector<Algebraic> result;
-  if (p.degree() < 1) return result;
-  std::vector<std::pair<Algebraic, AK::Multiplicity_type>> roots;
-  algebraic_kernel().solve_1_object()(integer_polynomial(p), std::back_inserter(roots));
-  for (const auto& root : roots) result.push_back(root.first);
-  return result;
-}
-
-// returns a rational strictly between low < high.
-Rational rational_between(const Algebraic& low, const Algebraic& high) {
-  return rational(algebraic_kernel().bound_between_1_object()(low, high));
-}
-
-double approximate(const Algebraic& x) {
-  return CGAL::to_double(x);
-}
+using detail::algebraic;
+using detail::Algebraic;
+using detail::algebraic_kernel;
+using detail::all_roots;
+using detail::approximate;
+using detail::integer_polynomial;
+using detail::rational_between;
 
 RationalPoint2 rational_point(const Point2& p) {
   return CGAL::exact(p);
@@ -189,6 +131,15 @@ struct BoundaryPiece {
   PieceEnd start, end;
 };
 
+// A piece of a chained ring, for its exact form (exact_corner.h): where it starts, its curve.
+struct RingPiece {
+  PieceEnd start;
+  std::array<Exact, 6> curve;
+  bool joint = false;
+};
+// the rings of one polygon: the outer ring, then its holes.
+using PolygonPieces = std::vector<std::vector<RingPiece>>;
+
 }  // namespace
 
 struct ExactUmbra::Impl {
@@ -202,6 +153,7 @@ struct ExactUmbra::Impl {
   double area = 0, penumbra_area = 0;
   std::vector<UmbraArc> boundary, penumbra_boundary;
   std::vector<CurvedPolygon> umbra_polygons, penumbra_polygons;
+  std::vector<PolygonPieces> umbra_pieces, penumbra_pieces;  // alike, piece by piece
   bool joint = false;
   std::size_t cells = 0;
 
@@ -237,6 +189,49 @@ struct ExactUmbra::Impl {
         below = std::max(below, sorted[next].second + 1);
       result.push_back(column.labels[below]);
     }
+    return result;
+  }
+
+  // a box of rationals that holds the point where a piece ends (exact_corner.h).
+  std::optional<detail::RationalBox> enclose(const PieceEnd& end, int bits) const {
+    const Pencil& pencil = sectors[end.sector].pencil;
+    const auto exactly = [](const RationalPoint2& p) {
+      return detail::RationalBox{std::pair{p.x(), p.x()}, std::pair{p.y(), p.y()}};
+    };
+    if (end.curve < 0) return exactly(pencil.point(*end.ray_s, *end.r));
+    const Curve& curve = curves[end.curve];
+    if (end.s.is_rational()) {
+      const Rational s = detail::rational(end.s.rational());
+      if (const auto r = r_at(curve, s)) return exactly(pencil.point(s, *r));
+    }
+    const auto [low, high] = detail::enclosure(end.s, bits);
+    const std::array<Poly, 3> point = pencil.curve_point(curve.f);
+    const auto s = detail::ratio_range(point[0], point[2], low, high);
+    const auto t = detail::ratio_range(point[1], point[2], low, high);
+    if (!s || !t) return std::nullopt;
+    return detail::RationalBox{*s, *t};
+  }
+
+  // the polygons of pieces in exact canonical form.
+  std::vector<ExactCurvedPolygon> exact_polygons(const std::vector<PolygonPieces>& pieces) const {
+    const auto ring = [&](const std::vector<RingPiece>& traced) {
+      std::vector<detail::TracedEdge> edges;
+      for (const RingPiece& piece : traced) {
+        const auto& c = piece.curve;
+        edges.push_back({{CGAL::exact(c[0]), CGAL::exact(c[1]), CGAL::exact(c[2]),
+                          CGAL::exact(c[3]), CGAL::exact(c[4]), CGAL::exact(c[5])},
+                         piece.joint,
+                         [this, end = piece.start](int bits) { return enclose(end, bits); }});
+      }
+      return detail::exact_ring(edges);
+    };
+    std::vector<ExactCurvedPolygon> result;
+    for (const PolygonPieces& polygon : pieces) {
+      ExactCurvedPolygon exact{ring(polygon.front()), {}};
+      for (std::size_t k = 1; k < polygon.size(); ++k) exact.holes.push_back(ring(polygon[k]));
+      result.push_back(std::move(exact));
+    }
+    detail::canonical_order(result);
     return result;
   }
 
@@ -941,9 +936,10 @@ bool same_point(const ExactUmbra::Impl& impl, const PieceEnd& a, const PieceEnd&
 // chains the pieces into rings (each piece's end to the piece starting there, decided by
 // same_point among the starts near it in doubles), outer rings counter-clockwise and holes
 // clockwise, each hole in the smallest outer ring around it.
-std::vector<CurvedPolygon> chain(const ExactUmbra::Impl& impl, std::vector<BoundaryPiece> pieces,
-                                 double scale) {
+std::pair<std::vector<CurvedPolygon>, std::vector<PolygonPieces>> chain(
+    const ExactUmbra::Impl& impl, std::vector<BoundaryPiece> pieces, double scale) {
   std::vector<CurvedRing> rings;
+  std::vector<std::vector<RingPiece>> ring_pieces;
   std::vector<bool> used(pieces.size(), false);
   const double near = 1e-6 * scale;
   // the pieces by the abscissa of their start, to find the candidates near a point
@@ -954,10 +950,12 @@ std::vector<CurvedPolygon> chain(const ExactUmbra::Impl& impl, std::vector<Bound
   for (std::size_t first = 0; first < pieces.size(); ++first) {
     if (used[first]) continue;
     CurvedRing ring;
+    std::vector<RingPiece> traced;
     std::size_t k = first;
     while (true) {
       used[k] = true;
       const UmbraArc& arc = pieces[k].arc;
+      traced.push_back({pieces[k].start, arc.curve, arc.joint});
       const std::size_t from = ring.points.empty() ? 0 : ring.points.size() - 1;
       for (std::size_t i = ring.points.empty() ? 0 : 1; i < arc.points.size(); ++i)
         ring.points.push_back(arc.points[i]);
@@ -979,6 +977,7 @@ std::vector<CurvedPolygon> chain(const ExactUmbra::Impl& impl, std::vector<Bound
     }
     ring.points.pop_back();  // the first point again
     rings.push_back(std::move(ring));
+    ring_pieces.push_back(std::move(traced));
   }
   const auto signed_area = [](const CurvedRing& ring) {
     double sum = 0;
@@ -1001,21 +1000,26 @@ std::vector<CurvedPolygon> chain(const ExactUmbra::Impl& impl, std::vector<Bound
     return in;
   };
   std::vector<CurvedPolygon> polygons;
+  std::vector<PolygonPieces> polygon_pieces;
   std::vector<double> areas;
-  for (CurvedRing& ring : rings)
-    if (signed_area(ring) > 0) {
-      areas.push_back(signed_area(ring));
-      polygons.push_back({std::move(ring), {}});
+  std::vector<bool> outer(rings.size());
+  for (std::size_t r = 0; r < rings.size(); ++r)
+    if ((outer[r] = signed_area(rings[r]) > 0)) {
+      areas.push_back(signed_area(rings[r]));
+      polygons.push_back({std::move(rings[r]), {}});
+      polygon_pieces.push_back({std::move(ring_pieces[r])});
     }
-  for (CurvedRing& ring : rings) {
-    if (ring.points.empty() || signed_area(ring) > 0) continue;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    if (outer[r] || rings[r].points.empty()) continue;
     std::optional<std::size_t> best;
     for (std::size_t k = 0; k < polygons.size(); ++k)
-      if (inside(polygons[k].outer, ring.points.front()) && (!best || areas[k] < areas[*best]))
+      if (inside(polygons[k].outer, rings[r].points.front()) && (!best || areas[k] < areas[*best]))
         best = k;
-    if (best) polygons[*best].holes.push_back(std::move(ring));
+    if (!best) continue;
+    polygons[*best].holes.push_back(std::move(rings[r]));
+    polygon_pieces[*best].push_back(std::move(ring_pieces[r]));
   }
-  return polygons;
+  return {std::move(polygons), std::move(polygon_pieces)};
 }
 
 // A curve of the sweep in doubles around s = c: r(c + t) for small t.
@@ -1137,6 +1141,14 @@ const std::vector<CurvedPolygon>& ExactUmbra::penumbra_polygons() const {
   return impl_->penumbra_polygons;
 }
 
+std::vector<ExactCurvedPolygon> ExactUmbra::exact_umbra_polygons() const {
+  return impl_->exact_polygons(impl_->umbra_pieces);
+}
+
+std::vector<ExactCurvedPolygon> ExactUmbra::exact_penumbra_polygons() const {
+  return impl_->exact_polygons(impl_->penumbra_pieces);
+}
+
 double ExactUmbra::penumbra_area() const {
   return impl_->penumbra_area;
 }
@@ -1211,8 +1223,9 @@ ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
   double size = 0;  // the face's extent in frame units, for the chaining's candidates
   for (const RationalPoint2& p : impl->face.points())
     size = std::max({size, std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y()))});
-  impl->umbra_polygons = chain(*impl, std::move(umbra_pieces), size);
-  impl->penumbra_polygons = chain(*impl, std::move(penumbra_pieces), size);
+  std::tie(impl->umbra_polygons, impl->umbra_pieces) = chain(*impl, std::move(umbra_pieces), size);
+  std::tie(impl->penumbra_polygons, impl->penumbra_pieces) =
+      chain(*impl, std::move(penumbra_pieces), size);
   return ExactUmbra(std::move(impl));
 }
 

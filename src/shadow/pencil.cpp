@@ -201,6 +201,17 @@ RationalPoint2 Pencil::point(const Rational& s, const Rational& r) const {
   return CGAL::ORIGIN + (a0_ + s * a1_) + r * (b0_ + s * b1_);
 }
 
+std::array<Poly, 3> Pencil::curve_point(const PencilCurve& curve) const {
+  // P = A(s) + r B(s) with r = -num / den: P den = A den - num B.
+  std::array<Poly, 3> result;
+  for (int k = 0; k < 2; ++k) {
+    const Poly a = Poly::linear(a0_[k], a1_[k]), b = Poly::linear(b0_[k], b1_[k]);
+    result[k] = a * curve.den - curve.num * b;
+  }
+  result[2] = curve.den;
+  return result;
+}
+
 std::array<double, 2> Pencil::point(double s, double r) const {
   auto d = [](const Rational& x) { return CGAL::to_double(x); };
   return {d(a0_.x()) + s * d(a1_.x()) + r * (d(b0_.x()) + s * d(b1_.x())),

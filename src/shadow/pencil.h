@@ -103,6 +103,9 @@ class Pencil {
 
   RationalPoint2 point(const Rational& s, const Rational& r) const;
   std::array<double, 2> point(double s, double r) const;
+  // the point of curve on the line s of the pencil as (x(s), y(s), w(s)): P = (x, y) / w,
+  // where w(s) = curve.den(s) != 0.
+  std::array<Poly, 3> curve_point(const PencilCurve& curve) const;
   // returns (s, r) of p when p lies in the closed sector (for a cone: p != x0 and p in
   // the closed cone; s may lie outside [s_low, s_high] for parallel lines).
   std::optional<std::pair<Rational, Rational>> coordinates(const RationalPoint2& p) const;

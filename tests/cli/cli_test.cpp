@@ -2,6 +2,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -71,18 +72,67 @@ BOOST_AUTO_TEST_CASE(bad_scene_reports_file_and_path_and_exits_2) {
                scene.string() + ": lights[0].linear: a linear source must not have zero length"));
 }
 
-BOOST_AUTO_TEST_CASE(check_refuses_a_curved_golden_by_name) {
-  // A golden written with --joint-umbrae has curved regions that check cannot compare yet:
-  // a clear error naming the region, exit 2, rather than a missing "exact".
+BOOST_AUTO_TEST_CASE(check_compares_a_curved_golden_exactly) {
+  // A golden written with --joint-umbrae --exact holds each curved region in canonical exact
+  // form (conics and algebraic corners): check recomputes with joint umbrae (the golden says
+  // so) and finds it equal, also for the scene with its objects in reverse order; a changed
+  // conic or corner is a difference (status 1, naming the face, light and region); a
+  // golden without --exact is refused (status 2).
   const auto dir = penumbra::test::scratch_dir("cli-curved-golden");
   const auto golden = dir / "joint.json";
   const std::string scene = "fixtures/scenes/linear-joint-umbra.json";
   BOOST_TEST_REQUIRE(
       run_penumbra("shadows " + scene + " --joint-umbrae --exact -o '" + golden.string() + "'")
           .status == 0);
-  const auto result = run_penumbra("check " + scene + " --golden '" + golden.string() + "'");
+  auto result = run_penumbra("check " + scene + " --golden '" + golden.string() + "'");
+  BOOST_TEST(result.status == 0, result.out + result.err);
+  BOOST_TEST(contains(result.out, "equal to"));
+
+  auto document = nlohmann::json::parse(penumbra::test::read_text(golden));
+  BOOST_TEST(document.at("joint_umbrae") == true);
+  const auto reversed = dir / "reversed.json";
+  auto scene_json = nlohmann::json::parse(penumbra::test::read_text(scene));
+  std::reverse(scene_json["objects"].begin(), scene_json["objects"].end());
+  std::ofstream(reversed) << scene_json.dump();
+  result = run_penumbra("check '" + reversed.string() + "' --golden '" + golden.string() + "'");
+  BOOST_TEST(result.status == 0, result.out + result.err);
+
+  nlohmann::json* joint_edge = nullptr;  // the umbra's edge on the joint conic
+  std::string where;
+  for (auto& entry : document["faces"])
+    for (auto& shadow : entry["lights"])
+      if (shadow["umbra"].contains("axes"))
+        for (auto& edge : shadow["umbra"]["exact"][0]["outer"])
+          if (edge["joint"] == true && !joint_edge) {
+            joint_edge = &edge;
+            where = entry["object"].get<std::string>() + " face " + entry["face"].dump() +
+                    ", light " + shadow["light"].get<std::string>() + ": umbra differs";
+          }
+  BOOST_TEST_REQUIRE(joint_edge != nullptr);
+  const nlohmann::json kept = *joint_edge;
+  const auto changed = dir / "changed.json";
+  for (int change = 0; change < 2; ++change) {
+    *joint_edge = kept;
+    if (change == 0)
+      (*joint_edge)["conic"][5] = "1/3";
+    else  // another corner: the same polynomial's next root, or another rational
+      (*joint_edge)["from"]["s"] =
+          (*joint_edge)["from"]["s"].is_string()
+              ? nlohmann::json("1/7")
+              : nlohmann::json{{"of", kept["from"]["s"]["of"]},
+                               {"root", kept["from"]["s"]["root"].dump() == "0" ? 1 : 0}};
+    std::ofstream(changed) << document.dump();
+    result = run_penumbra("check " + scene + " --golden '" + changed.string() + "'");
+    BOOST_TEST(result.status == 1, result.out + result.err);
+    BOOST_TEST(contains(result.out, where), result.out);
+  }
+
+  const auto plain = dir / "plain.json";
+  BOOST_TEST_REQUIRE(
+      run_penumbra("shadows " + scene + " --joint-umbrae -o '" + plain.string() + "'").status == 0);
+  result = run_penumbra("check " + scene + " --golden '" + plain.string() + "'");
   BOOST_TEST(result.status == 2);
-  BOOST_TEST(contains(result.err, golden.string() + ": faces[3].lights[0].umbra: a curved region"),
+  BOOST_TEST(contains(result.err, "missing \"exact\" (write golden files with --exact)"),
              result.err);
 }
 

@@ -7,10 +7,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "../shadow/solids.h"
 #include "penumbra/base/numbers.h"
 #include "penumbra/illuminance/scene_illuminance.h"
 #include "penumbra/render/scanline_renderer.h"
 #include "penumbra/scene/load_scene.h"
+#include "penumbra/shadow/exact_umbra.h"
+#include "penumbra/shadow/shadow_map.h"
 #include "support/fixtures.h"
 
 using penumbra::pi;
@@ -163,6 +166,52 @@ BOOST_AUTO_TEST_CASE(shadow_edges_land_on_the_derived_pixels) {
       BOOST_TEST(e(135) == lit_lux, boost::test_tools::tolerance(1e-12));
     }
   }
+}
+
+// Issue #17: with joint umbrae the exact umbra's curved edges bound the interpolation. The
+// two boards of linear-joint-umbra hide the tube together beyond the upright (y < -1); a
+// camera at the floor's side, below the shelf, sees that floor. At interval 7 every pixel
+// whose visible point lies in the joint part of the umbra (in the exact curved umbra and
+// out of the straight one, decided exactly at the point) is exactly 0, as the solver gives
+// there; without the curved edges the interpolation bridges them and some of those pixels
+// are not 0.
+BOOST_AUTO_TEST_CASE(joint_umbrae_bound_the_interpolation_along_their_conics) {
+  Scene scene = penumbra::load_scene(fixture("scenes/linear-joint-umbra.json"));
+  scene.camera = penumbra::Camera{{-5.5, -3.5, 1.5}, {0, -3, 0}, {0, 0, 1}, 70, 160, 120};
+  penumbra::ShadowOptions options;
+  options.joint_umbrae = true;
+  const penumbra::ShadowResult shadows = penumbra::compute_shadows(scene, options);
+  const penumbra::FaceShadow* floor = nullptr;
+  const penumbra::Face* face = nullptr;
+  for (std::size_t r = 0; r < shadows.receivers.size(); ++r)
+    if (shadows.lights[0].faces[r].curved) {
+      floor = &shadows.lights[0].faces[r];
+      const auto& receiver = shadows.receivers[r];
+      face = &scene.objects[receiver.object].solid.faces()[receiver.face];
+    }
+  BOOST_TEST_REQUIRE(floor != nullptr);
+  RenderOptions coarse;
+  coarse.interval = 7;
+  const RenderedImage with = ScanlineRenderer(scene, *scene.camera, true, true).render(coarse);
+  const RenderedImage without = ScanlineRenderer(scene, *scene.camera, true, false).render(coarse);
+  const ScanlineRenderer renderer(scene, *scene.camera);
+  int joint = 0, bridged = 0;
+  for (int j = 0; j < with.height; ++j)
+    for (int i = 0; i < with.width; ++i) {
+      const auto seen = renderer.visible_point(i, j);
+      if (!seen || (*seen)[1][2] < 0.5) continue;  // the floor's top only
+      const penumbra::Point2 q = face->frame.to_frame(penumbra::to_exact((*seen)[0]));
+      if (!floor->curved->contains(q) ||
+          penumbra::test::side_of(floor->umbra, q) != CGAL::ON_UNBOUNDED_SIDE)
+        continue;
+      ++joint;
+      BOOST_TEST(with.illuminance[with.index(i, j)] == 0.0, "pixel " << i << " " << j);
+      bridged += without.illuminance[without.index(i, j)] > 0;
+    }
+  BOOST_TEST(joint >= 50);
+  BOOST_TEST(bridged > 0);
+  BOOST_TEST_MESSAGE(joint << " pixels in the joint umbra, " << bridged
+                           << " bridged without its curved edges");
 }
 
 BOOST_AUTO_TEST_CASE(luminance_is_reflectance_times_illuminance_over_pi) {

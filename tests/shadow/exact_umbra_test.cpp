@@ -6,7 +6,11 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <unsupported/Eigen/Polynomials>
+
+#include <algorithm>
 #include <random>
+#include <sstream>
 
 #include "penumbra/illuminance/occlusion.h"
 #include "penumbra/illuminance/scene_illuminance.h"
@@ -178,6 +182,87 @@ ConvexPolyhedron board(std::vector<Point3> corners) {
   return ConvexPolyhedron::flat_polygon(corners);
 }
 
+// A random scene: two to six solids, hulls of six random points of a 2 x 2 x 1 cell on a
+// quarter-metre grid (edges in every direction, close enough together to hide a tube
+// jointly), and a tube above them.
+struct RandomScene {
+  std::vector<ConvexPolyhedron> solids;
+  Point3 q1, q2;
+};
+
+RandomScene random_scene(std::mt19937& random) {
+  std::uniform_int_distribution<int> corner(-3, 2), count(2, 6), quarter(0, 8), end(-12, 12);
+  RandomScene scene;
+  const int n = count(random);
+  for (int k = 0; k < n; ++k) {
+    const int x = corner(random), y = corner(random);
+    std::vector<Point3> points;
+    for (int p = 0; p < 6; ++p)
+      points.emplace_back(x + quarter(random) / 4.0, y + quarter(random) / 4.0,
+                          2 + quarter(random) / 8.0);
+    try {
+      scene.solids.push_back(ConvexPolyhedron::hull(points));
+    } catch (const std::exception&) {  // coplanar draws: none with the seeds used
+    }
+  }
+  scene.q1 = Point3(end(random) / 4.0, end(random) / 4.0, 4.5);
+  scene.q2 = Point3(end(random) / 4.0, end(random) / 4.0, 5);
+  return scene;
+}
+
+// The value of an exact coordinate in doubles, found apart from the library: the root-th
+// real root of its polynomial by Eigen's companion-matrix eigenvalues.
+double value_of(const AlgebraicCoordinate& x) {
+  if (x.value) return CGAL::to_double(*x.value);
+  double largest = 0;
+  for (const Exact& c : x.polynomial) largest = std::max(largest, std::abs(CGAL::to_double(c)));
+  Eigen::VectorXd coefficients(x.polynomial.size());
+  for (std::size_t k = 0; k < x.polynomial.size(); ++k)
+    coefficients[k] = CGAL::to_double(x.polynomial[k]) / largest;
+  const Eigen::PolynomialSolver<double, Eigen::Dynamic> solver(coefficients);
+  std::vector<double> roots;
+  solver.realRoots(roots, 1e-9);
+  std::sort(roots.begin(), roots.end());
+  BOOST_TEST_REQUIRE(x.root < int(roots.size()));
+  return roots[x.root];
+}
+
+// a s^2 + b s t + c t^2 + d s + e t + f and the sum of its terms' magnitudes.
+std::pair<double, double> conic_at(const std::array<Exact, 6>& curve, double s, double t) {
+  const double terms[6] = {s * s, s * t, t * t, s, t, 1};
+  double value = 0, size = 0;
+  for (int k = 0; k < 6; ++k) {
+    value += CGAL::to_double(curve[k]) * terms[k];
+    size += std::abs(CGAL::to_double(curve[k]) * terms[k]);
+  }
+  return {value, size};
+}
+
+// the exact polygons written out with every rational, to compare two computations.
+std::string written(const std::vector<ExactCurvedPolygon>& polygons) {
+  std::ostringstream out;
+  const auto coordinate = [&](const AlgebraicCoordinate& x) {
+    if (x.value) out << CGAL::exact(*x.value) << " ";
+    for (const Exact& c : x.polynomial) out << CGAL::exact(c) << ",";
+    out << "#" << x.root << " ";
+  };
+  const auto ring = [&](const std::vector<ExactEdge>& edges) {
+    for (const ExactEdge& edge : edges) {
+      coordinate(edge.from.s);
+      coordinate(edge.from.t);
+      for (const Exact& c : edge.curve) out << CGAL::exact(c) << " ";
+      out << edge.joint << "; ";
+    }
+    out << "| ";
+  };
+  for (const ExactCurvedPolygon& polygon : polygons) {
+    ring(polygon.outer);
+    for (const auto& hole : polygon.holes) ring(hole);
+    out << "\n";
+  }
+  return out.str();
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(exact_umbra)
@@ -234,27 +319,10 @@ BOOST_AUTO_TEST_CASE(two_boards_close_the_gap_along_the_derived_hyperbola) {
 
 BOOST_AUTO_TEST_CASE(random_scenes_of_two_to_six_solids_agree_with_the_oracle) {
   std::mt19937 random(23);  // fixed: failures must reproduce
-  std::uniform_int_distribution<int> corner(-3, 2), count(2, 6), quarter(0, 8), end(-12, 12);
   const Face& face = floor_face();
   int mismatches = 0, joint = 0, arcs = 0;
   for (int scene = 0; scene < 8; ++scene) {
-    // Solids: hulls of six random points of a 2 x 2 x 1 cell on a quarter-metre grid,
-    // edges in every direction, close enough together to hide a tube jointly.
-    std::vector<ConvexPolyhedron> solids;
-    const int n = count(random);
-    for (int k = 0; k < n; ++k) {
-      const int x = corner(random), y = corner(random);
-      std::vector<Point3> points;
-      for (int p = 0; p < 6; ++p)
-        points.emplace_back(x + quarter(random) / 4.0, y + quarter(random) / 4.0,
-                            2 + quarter(random) / 8.0);
-      try {
-        solids.push_back(ConvexPolyhedron::hull(points));
-      } catch (const std::exception&) {  // coplanar draws: none this time
-      }
-    }
-    const Point3 q1(end(random) / 4.0, end(random) / 4.0, 4.5),
-        q2(end(random) / 4.0, end(random) / 4.0, 5);
+    const auto [solids, q1, q2] = random_scene(random);
     const ExactUmbra umbra = umbra_of(face, q1, q2, solids);
     joint += umbra.joint();
     compare_with_oracle(face, q1, q2, solids, umbra, 200, 100 + scene, &mismatches);
@@ -264,6 +332,74 @@ BOOST_AUTO_TEST_CASE(random_scenes_of_two_to_six_solids_agree_with_the_oracle) {
   BOOST_TEST(joint >= 3);
   BOOST_TEST(arcs >= 3);
   BOOST_TEST_MESSAGE(joint << " scenes with joint umbrae, " << arcs << " curved pieces crossed");
+}
+
+// The exact form of the curved regions (shadows --exact, check): every corner, computed
+// again in doubles from its description alone (Eigen's roots of its polynomials), lies on
+// both curves that meet there and on the densified rings; rational corners lie on both
+// exactly; edges alternate curves; and the form does not depend on the order of the
+// occluders (the same text with the solids reversed).
+BOOST_AUTO_TEST_CASE(exact_rings_name_each_corner_on_its_two_curves_in_any_order) {
+  std::mt19937 random(29);  // fixed: failures must reproduce
+  const Face& face = floor_face();
+  int corners = 0, algebraic = 0, scenes = 0;
+  for (int scene = 0; scene < 6; ++scene) {
+    auto [solids, q1, q2] = random_scene(random);
+    const ExactUmbra umbra = umbra_of(face, q1, q2, solids);
+    if (!umbra.joint()) continue;
+    ++scenes;
+    std::vector<std::array<double, 2>> points;  // every point of the densified rings
+    for (const auto* polygons : {&umbra.umbra_polygons(), &umbra.penumbra_polygons()})
+      for (const CurvedPolygon& polygon : *polygons) {
+        points.insert(points.end(), polygon.outer.points.begin(), polygon.outer.points.end());
+        for (const CurvedRing& hole : polygon.holes)
+          points.insert(points.end(), hole.points.begin(), hole.points.end());
+      }
+    const auto exact_umbra = umbra.exact_umbra_polygons();
+    const auto exact_penumbra = umbra.exact_penumbra_polygons();
+    BOOST_TEST(exact_umbra.size() == umbra.umbra_polygons().size());
+    for (const auto* polygons : {&exact_umbra, &exact_penumbra})
+      for (const ExactCurvedPolygon& polygon : *polygons) {
+        std::vector<const std::vector<ExactEdge>*> rings{&polygon.outer};
+        for (const auto& hole : polygon.holes) rings.push_back(&hole);
+        for (const auto* ring : rings) {
+          BOOST_TEST_REQUIRE(ring->size() >= 2u);
+          for (std::size_t k = 0; k < ring->size(); ++k) {
+            const ExactEdge& edge = (*ring)[k];
+            const ExactEdge& before = (*ring)[(k + ring->size() - 1) % ring->size()];
+            BOOST_TEST((edge.curve != before.curve));
+            ++corners;
+            if (edge.from.s.value && edge.from.t.value) {
+              const Exact s = *edge.from.s.value, t = *edge.from.t.value;
+              for (const auto* curve : {&edge.curve, &before.curve}) {
+                const auto& c = *curve;
+                BOOST_TEST(CGAL::is_zero(c[0] * s * s + c[1] * s * t + c[2] * t * t + c[3] * s +
+                                         c[4] * t + c[5]));
+              }
+            } else {
+              ++algebraic;
+            }
+            const double s = value_of(edge.from.s), t = value_of(edge.from.t);
+            for (const auto* curve : {&edge.curve, &before.curve}) {
+              const auto [value, size] = conic_at(*curve, s, t);
+              BOOST_TEST(std::abs(value) <= 1e-9 * size, "corner " << s << " " << t);
+            }
+            double nearest = 1e300;
+            for (const auto& p : points)
+              nearest = std::min(nearest, std::hypot(p[0] - s, p[1] - t));
+            BOOST_TEST(nearest <= 1e-9, "corner " << s << " " << t);
+          }
+        }
+      }
+    std::reverse(solids.begin(), solids.end());
+    const ExactUmbra reversed = umbra_of(face, q1, q2, solids);
+    BOOST_TEST(written(reversed.exact_umbra_polygons()) == written(exact_umbra));
+    BOOST_TEST(written(reversed.exact_penumbra_polygons()) == written(exact_penumbra));
+  }
+  BOOST_TEST(scenes >= 3);
+  BOOST_TEST(algebraic >= 10);
+  BOOST_TEST_MESSAGE(scenes << " scenes with joint umbrae, " << corners << " corners, " << algebraic
+                            << " irrational");
 }
 
 // Occluders whose whole shadows do not overlap hide nothing together: the umbra is the

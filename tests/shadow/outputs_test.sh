@@ -10,9 +10,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 python=/usr/bin/python3
 
-# (the last with exact joint umbrae: curved rings drawn as densified polylines)
+# (the last two with exact joint umbrae: curved rings, arcs of ellipses drawn as SVG arcs)
 for entry in every-kind shadow-cube-point shadow-shared-face linear-fig5 \
-  "linear-joint-umbra --joint-umbrae"; do
+  "linear-joint-umbra --joint-umbrae" "linear-joint-ellipse --joint-umbrae"; do
   read -r scene flags <<<"$entry"
   file="$source_dir/fixtures/scenes/$scene.json"
   for view in top faces camera; do
@@ -22,6 +22,9 @@ for entry in every-kind shadow-cube-point shadow-shared-face linear-fig5 \
       --view "$view" --dxf "$work/$scene.dxf" --report "$work/$scene.csv" --loops
     xmllint --noout "$work/$scene-$view.svg"
     grep -q '<path' "$work/$scene-$view.svg"
+    if [ "$scene" = linear-joint-ellipse ]; then  # its umbra and penumbra meet along an ellipse
+      grep -Eq ' A[0-9.e+-]+ [0-9.e+-]+ [0-9.e+-]+ [01] [01] ' "$work/$scene-$view.svg"
+    fi
   done
   "$python" - "$work/$scene.json" "$work/$scene.dxf" "$work/$scene.csv" <<'PY'
 import csv, json, sys

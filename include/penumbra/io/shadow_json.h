@@ -22,6 +22,7 @@ struct ShadowJsonOptions {
   double range_fraction = 1.0 / 256;  // recorded so that `check` recomputes alike
   double full_scale_lux = 500;
   std::optional<double> range_lux;
+  bool joint_umbrae = false;  // recorded ("joint_umbrae": true) so that `check` recomputes alike
 };
 
 // returns the document options of a result computed with options: its culling recorded (so

@@ -64,8 +64,10 @@ class ScanlineRenderer {
   // face the camera sees (within the light's sphere of lighting; beyond it, the objects
   // that can shadow the face, without boundaries) and prepares the illuminance solver.
   // Throws what compute_shadows throws for a tube touching an object that shadows a seen
-  // face.
-  ScanlineRenderer(const Scene& scene, const Camera& camera, bool parallel = true);
+  // face. joint_umbrae: the exact umbrae of tubes hidden by several occluders together
+  // (ShadowOptions::joint_umbrae), whose curved edges then bound the interpolation too.
+  ScanlineRenderer(const Scene& scene, const Camera& camera, bool parallel = true,
+                   bool joint_umbrae = false);
   ~ScanlineRenderer();
 
   // === Methods

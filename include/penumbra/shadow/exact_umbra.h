@@ -64,6 +64,40 @@ struct CurvedPolygon {
   std::vector<CurvedRing> holes;
 };
 
+// A real algebraic coordinate of a corner, exactly: its rational value, or else the root-th
+// (from 0, increasing) real root of polynomial (integer coefficients, lowest degree first,
+// squarefree, primitive, leading coefficient positive).
+struct AlgebraicCoordinate {
+  std::optional<Exact> value;
+  std::vector<Exact> polynomial;
+  int root = 0;
+};
+
+// A corner of a curved ring in frame coordinates (s, t). Rational (value) where both edges
+// meeting there are straight; otherwise s is a root of the resultant of the two edges'
+// curves eliminating t, and t of the one eliminating s (their squarefree, primitive parts),
+// written as its value when that part is linear.
+struct ExactCorner {
+  AlgebraicCoordinate s, t;
+};
+
+// An edge of an exact curved ring: from its corner along curve (a s^2 + b s t + c t^2 + d s +
+// e t + f = 0, scaled so that its first nonzero coefficient is 1) to the next edge's corner.
+// Consecutive edges lie on different curves, or on one degenerate conic (a pair of lines).
+struct ExactEdge {
+  ExactCorner from;
+  std::array<Exact, 6> curve;
+  bool joint = false;
+};
+
+// A curved polygon in canonical form: each ring starts at its lexicographically smallest
+// corner (s, then t), the outer ring counter-clockwise and holes clockwise; holes, and the
+// polygons of a region, in the order of their rings (corner by corner).
+struct ExactCurvedPolygon {
+  std::vector<ExactEdge> outer;
+  std::vector<std::vector<ExactEdge>> holes;
+};
+
 class ExactUmbra {
  public:
   struct Impl;
@@ -85,6 +119,10 @@ class ExactUmbra {
   // exact ends (the same line of the pencil and the same r, compared exactly).
   const std::vector<CurvedPolygon>& umbra_polygons() const;
   const std::vector<CurvedPolygon>& penumbra_polygons() const;
+  // the umbra and the penumbra exactly, in canonical form (computed on each call: root
+  // isolation per corner).
+  std::vector<ExactCurvedPolygon> exact_umbra_polygons() const;
+  std::vector<ExactCurvedPolygon> exact_penumbra_polygons() const;
   // true when some part of the umbra is covered by no single occluder alone.
   bool joint() const;
   // the number of cells of the decomposition (columns x cells), for benchmarks.
