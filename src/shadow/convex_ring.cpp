@@ -62,6 +62,28 @@ std::optional<bool> ConvexRing::maybe_contains(const std::array<Interval, 2>& at
   return true;
 }
 
+FaceRegion::FaceRegion(std::vector<ConvexRing> pieces,
+                       std::vector<std::vector<RationalPoint2>> boundary)
+    : pieces_(std::move(pieces)), boundary_(std::move(boundary)) {
+  for (const auto& ring : boundary_) points_.insert(points_.end(), ring.begin(), ring.end());
+}
+
+bool FaceRegion::contains(const Probe& p) const {
+  return std::any_of(pieces_.begin(), pieces_.end(),
+                     [&](const ConvexRing& piece) { return piece.contains(p); });
+}
+
+std::optional<bool> FaceRegion::maybe_contains(const std::array<Interval, 2>& at) const {
+  bool certain = true;
+  for (const ConvexRing& piece : pieces_) {
+    const std::optional<bool> in = piece.maybe_contains(at);
+    if (!in) certain = false;
+    if (in == true) return true;
+  }
+  if (!certain) return std::nullopt;
+  return false;
+}
+
 std::array<Interval, 2> interval_point(const Pencil& pencil, const Interval& s, const Interval& r) {
   const auto& [a0, a1, b0, b1] = pencil.enclosures();
   return {a0[0] + s * a1[0] + r * (b0[0] + s * b1[0]), a0[1] + s * a1[1] + r * (b0[1] + s * b1[1])};

@@ -48,6 +48,29 @@ class ConvexRing {
   double low_[2] = {0, 0}, high_[2] = {0, 0};  // the box that encloses the vertices
 };
 
+// A face of the sweep: the union of closed convex pieces (one for a convex face; the convex
+// pieces of a mesh face, which may be non-convex and have holes), with the rings of its
+// boundary (outer and holes), whose edges and vertices the sweep cuts along.
+class FaceRegion {
+ public:
+  FaceRegion() = default;
+  FaceRegion(std::vector<ConvexRing> pieces, std::vector<std::vector<RationalPoint2>> boundary);
+  explicit FaceRegion(const ConvexRing& convex) : FaceRegion({convex}, {convex.points()}) {}
+
+  // every vertex of the boundary's rings.
+  const std::vector<RationalPoint2>& points() const { return points_; }
+  const std::vector<std::vector<RationalPoint2>>& boundary() const { return boundary_; }
+  bool contains(const Probe& p) const;
+  bool contains(const RationalPoint2& p) const { return contains(Probe(p)); }
+  // as ConvexRing::maybe_contains, for the union.
+  std::optional<bool> maybe_contains(const std::array<Interval, 2>& at) const;
+
+ private:
+  std::vector<ConvexRing> pieces_;
+  std::vector<std::vector<RationalPoint2>> boundary_;
+  std::vector<RationalPoint2> points_;
+};
+
 // The enclosure of the pencil's point (s, r) for enclosures of s and r (upward rounding).
 std::array<Interval, 2> interval_point(const Pencil& pencil, const Interval& s, const Interval& r);
 

@@ -144,7 +144,7 @@ using PolygonPieces = std::vector<std::vector<RingPiece>>;
 
 struct ExactUmbra::Impl {
   bool whole = false;  // no part of the source is visible: the whole face
-  ConvexRing face;
+  detail::FaceRegion face;
   FaceFrame frame;
   std::vector<Curve> curves;
   std::vector<Sector> sectors;
@@ -407,9 +407,9 @@ class Sweep {
 
   void collect_lines(const std::vector<UmbraOccluder>& occluders) {
     const FaceFrame& frame = face_.frame;
-    const std::vector<RationalPoint2>& face = impl_.face.points();
-    for (std::size_t k = 0; k < face.size(); ++k)
-      add_line(line_through(face[k], face[(k + 1) % face.size()]), nullptr, false);
+    for (const auto& ring : impl_.face.boundary())
+      for (std::size_t k = 0; k < ring.size(); ++k)
+        add_line(line_through(ring[k], ring[(k + 1) % ring.size()]), nullptr, false);
     const Point3 q1 = from_exact<Point3>(q1_), q2 = from_exact<Point3>(q2_);
     const RationalVector3 d = q2_ - q1_;
     for (std::size_t o = 0; o < occluders.size(); ++o) {
@@ -1167,10 +1167,23 @@ std::size_t ExactUmbra::cells() const {
 
 ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
                        const std::vector<UmbraOccluder>& occluders, double tolerance) {
+  return exact_umbra(face, {face.ring}, {face.ring}, q1, q2, occluders, tolerance);
+}
+
+ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
+                       const std::vector<Ring2>& boundary, const Point3& q1, const Point3& q2,
+                       const std::vector<UmbraOccluder>& occluders, double tolerance) {
   auto impl = std::make_shared<ExactUmbra::Impl>();
-  std::vector<RationalPoint2> ring;
-  for (const Point2& p : face.ring) ring.push_back(rational_point(p));
-  impl->face = ConvexRing(std::move(ring));
+  const auto rational_ring = [](const Ring2& ring) {
+    std::vector<RationalPoint2> points;
+    for (const Point2& p : ring) points.push_back(rational_point(p));
+    return points;
+  };
+  std::vector<ConvexRing> convex;
+  for (const Ring2& piece : pieces) convex.emplace_back(rational_ring(piece));
+  std::vector<std::vector<RationalPoint2>> rings;
+  for (const Ring2& ring : boundary) rings.push_back(rational_ring(ring));
+  impl->face = detail::FaceRegion(std::move(convex), std::move(rings));
   impl->frame = face.frame;
   const auto source = visible_source(face, q1, q2);
   if (!source) {

@@ -1,6 +1,9 @@
 #include "mesh_face_shadow.h"
 
+#include <CGAL/convex_hull_2.h>
+
 #include <algorithm>
+#include <map>
 
 #include "penumbra/geometry/exact.h"
 #include "region_set.h"
@@ -113,6 +116,46 @@ FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const Fac
   result.penumbra =
       empty_everywhere(&FaceShadow::penumbra) ? Region2{} : united(&FaceShadow::penumbra);
   return result;
+}
+
+std::shared_ptr<const ExactUmbra> mesh_face_umbra(const Scene& scene, const MeshFace& face,
+                                                  const std::vector<const Face*>& pieces,
+                                                  const FaceShadow& united, const Point3& q1,
+                                                  const Point3& q2) {
+  Face whole;
+  whole.vertices = face.outer;
+  whole.plane = face.plane;
+  whole.frame = face.frame;
+  whole.ring = face.ring;
+  whole.area = face.area;
+  std::vector<Ring2> convex, boundary{face.ring};
+  for (const Face* piece : pieces)
+    convex.push_back(FrameMap(piece->frame, face.frame).ring(piece->ring));
+  for (const auto& hole : face.holes) {
+    Ring2 ring;
+    for (const Point3& p : hole) ring.push_back(face.frame.to_frame(p));
+    boundary.push_back(std::move(ring));
+  }
+  // per occluder, the points of its rings on every piece (already in the face's frame)
+  std::map<std::size_t, std::pair<std::vector<Point2>, std::vector<Point2>>> rings;
+  for (const OccluderShadow& o : united.occluders) {
+    auto& [shadow, umbra] = rings[o.occluder];
+    shadow.insert(shadow.end(), o.polygon.begin(), o.polygon.end());
+    if (o.umbra) umbra.insert(umbra.end(), o.umbra->begin(), o.umbra->end());
+  }
+  const auto hull = [](const std::vector<Point2>& points) {
+    Ring2 ring;
+    CGAL::convex_hull_2(points.begin(), points.end(), std::back_inserter(ring));
+    return ring;
+  };
+  std::vector<UmbraOccluder> occluders;
+  for (const auto& [object, points] : rings) {
+    UmbraOccluder occluder{&scene.objects[object].solid, hull(points.first), {}};
+    if (!points.second.empty()) occluder.umbra = hull(points.second);
+    occluders.push_back(std::move(occluder));
+  }
+  return std::make_shared<const ExactUmbra>(
+      exact_umbra(whole, convex, boundary, q1, q2, occluders));
 }
 
 }  // namespace penumbra::detail

@@ -4,11 +4,14 @@
 // exactly from the piece's frame into the face's (an affine map with rational
 // coefficients: both frames lie in the face's plane), and the regions are united.
 
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include "penumbra/geometry/face_frame.h"
+#include "penumbra/scene/scene.h"
+#include "penumbra/shadow/exact_umbra.h"
 #include "penumbra/shadow/face_shadow.h"
 
 namespace penumbra::detail {
@@ -33,5 +36,16 @@ class FrameMap {
 // lit, or wholly in shadow) is then taken as it, without a Boolean union.
 FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const FaceFrame*>>& pieces,
                         const FaceFrame& frame, const std::optional<Region2>& whole = {});
+
+// The exact umbra of the tube q1q2 (ends in lexicographic order) on a mesh face of several
+// pieces whose pieces have joint parts (exact_umbra.h, issue #17): computed on the whole face
+// (its pieces carried into its frame, its outer ring and holes), so that joint parts across
+// the pieces' seams are one curved region. united is the face's shadow map from
+// unite_pieces: each occluder's shadow and umbra become the convex hulls of its pieces'
+// rings, which agree with its whole shadow and single umbra on the face.
+std::shared_ptr<const ExactUmbra> mesh_face_umbra(const Scene& scene, const MeshFace& face,
+                                                  const std::vector<const Face*>& pieces,
+                                                  const FaceShadow& united, const Point3& q1,
+                                                  const Point3& q2);
 
 }  // namespace penumbra::detail

@@ -242,6 +242,14 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
   return result;
 }
 
+// The end points of a tube in lexicographic order: the loops (which start at C1) must not
+// depend on the order the file lists them in.
+std::pair<Point3, Point3> tube_ends(const LinearLight& tube) {
+  Point3 q1 = to_exact(tube.start), q2 = to_exact(tube.end);
+  if (CGAL::compare_xyz(q2, q1) == CGAL::SMALLER) std::swap(q1, q2);
+  return {q1, q2};
+}
+
 // The same for a linear source (Nishita 1985 section 4.1, docs/linear-shadows.md),
 // culled by a sphere around the tube's capsule of lighting.
 LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& receivers,
@@ -251,10 +259,7 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   LightShading shading(scene, receivers, rank, light_index, options);
   const Light& light = shading.light();
   const auto& tube = std::get<LinearLight>(light.source);
-  // End points in lexicographic order: the loops (which start at C1) must not
-  // depend on the order the file lists them in.
-  Point3 q1 = to_exact(tube.start), q2 = to_exact(tube.end);
-  if (CGAL::compare_xyz(q2, q1) == CGAL::SMALLER) std::swap(q1, q2);
+  const auto [q1, q2] = tube_ends(tube);
 
   std::optional<LightingSphere> sphere;
   if (range_threshold(options) > 0)
@@ -362,7 +367,7 @@ std::optional<Region2> whole_face(const MeshFace& face, std::size_t present) {
 // that are pieces of one MeshFace become one slot, its shadow maps united from theirs, and the
 // slots are put back in canonical order (by owner name, then face number).
 void unite_mesh_faces(const Scene& scene, const std::vector<std::size_t>& rank,
-                      ShadowResult& result) {
+                      const ShadowOptions& options, ShadowResult& result) {
   const std::size_t count = result.receivers.size();
   std::vector<std::size_t> slot_of_face(scene.mesh_faces.size(), kNoMeshFace);
   std::vector<std::vector<std::size_t>> members;  // per new slot, the old receivers
@@ -416,12 +421,22 @@ void unite_mesh_faces(const Scene& scene, const std::vector<std::size_t>& rank,
         return;
       }
       std::vector<std::pair<const FaceShadow*, const FaceFrame*>> pieces;
+      std::vector<const Face*> piece_faces;
+      bool curved = false;
       for (std::size_t r : members[slot]) {
         const Receiver& piece = result.receivers[r];
-        pieces.push_back(
-            {&light.faces[r], &scene.objects[piece.object].solid.faces()[piece.face].frame});
+        piece_faces.push_back(&scene.objects[piece.object].solid.faces()[piece.face]);
+        pieces.push_back({&light.faces[r], &piece_faces.back()->frame});
+        curved = curved || light.faces[r].curved;
       }
       faces[k] = detail::unite_pieces(pieces, face.frame, whole_face(face, members[slot].size()));
+      if (options.joint_umbrae && curved) {
+        // joint parts on some piece: the exact umbra of the whole face (issue #17)
+        const auto [q1, q2] = tube_ends(std::get<LinearLight>(scene.lights[light.light].source));
+        auto umbra = detail::mesh_face_umbra(scene, face, piece_faces, faces[k], q1, q2);
+        faces[k].joint_occlusion = umbra->joint();
+        if (faces[k].joint_occlusion) faces[k].curved = std::move(umbra);
+      }
       std::stable_sort(faces[k].occluders.begin(), faces[k].occluders.end(),
                        [&](const OccluderShadow& a, const OccluderShadow& b) {
                          return rank[a.occluder] < rank[b.occluder];
@@ -505,7 +520,8 @@ ShadowResult compute_shadows(const Scene& scene, const ShadowOptions& options) {
                            ? shade_area(scene, result.receivers, rank, light, options)
                            : shade_linear(scene, result.receivers, rank, light, options);
   });
-  if (options.unite_mesh_faces && !scene.mesh_faces.empty()) unite_mesh_faces(scene, rank, result);
+  if (options.unite_mesh_faces && !scene.mesh_faces.empty())
+    unite_mesh_faces(scene, rank, options, result);
   return result;
 }
 

@@ -10,9 +10,11 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 python=/usr/bin/python3
 
-# (the last two with exact joint umbrae: curved rings, arcs of ellipses drawn as SVG arcs)
+# (the last three with exact joint umbrae: curved rings, arcs of ellipses drawn as SVG arcs,
+# a mesh face with a hole)
 for entry in every-kind shadow-cube-point shadow-shared-face linear-fig5 \
-  "linear-joint-umbra --joint-umbrae" "linear-joint-ellipse --joint-umbrae"; do
+  "linear-joint-umbra --joint-umbrae" "linear-joint-ellipse --joint-umbrae" \
+  "linear-joint-mesh --joint-umbrae"; do
   read -r scene flags <<<"$entry"
   file="$source_dir/fixtures/scenes/$scene.json"
   for view in top faces camera; do
@@ -41,7 +43,10 @@ expected = {}
 def add(layer, ring):
     expected.setdefault(layer, []).append(ring)
 for face in loops["faces"]:
-    add("faces", face["boundary"])
+    boundary = face["boundary"]  # a ring, or {"outer", "holes"} for a face with holes
+    for ring in ([boundary["outer"]] + boundary["holes"] if isinstance(boundary, dict)
+                 else [boundary]):
+        add("faces", ring)
     for light in face["lights"]:
         if light.get("beyond_range"):
             continue

@@ -141,4 +141,13 @@ class ExactUmbra {
 ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
                        const std::vector<UmbraOccluder>& occluders, double tolerance = 1e-6);
 
+// the same on a face made of convex pieces (a mesh face, which may be non-convex and have
+// holes: scene.h, MeshFace): face gives the plane, the frame and the area, pieces the closed
+// convex pieces that tile it and boundary its rings (outer, then holes), all in face's
+// frame; each occluder's shadow and umbra are convex rings that agree with its whole shadow
+// and single umbra on the face.
+ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
+                       const std::vector<Ring2>& boundary, const Point3& q1, const Point3& q2,
+                       const std::vector<UmbraOccluder>& occluders, double tolerance = 1e-6);
+
 }  // namespace penumbra
