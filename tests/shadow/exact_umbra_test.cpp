@@ -263,6 +263,21 @@ std::string written(const std::vector<ExactCurvedPolygon>& polygons) {
   return out.str();
 }
 
+// A fixture scene's shadows with and without joint umbrae.
+struct BothWays {
+  explicit BothWays(const std::string& name)
+      : scene(load_scene(std::string(PENUMBRA_SOURCE_DIR) + "/fixtures/scenes/" + name + ".json")),
+        with(compute_shadows(scene, joint())),
+        without(compute_shadows(scene)) {}
+  static ShadowOptions joint() {
+    ShadowOptions options;
+    options.joint_umbrae = true;
+    return options;
+  }
+  Scene scene;
+  ShadowResult with, without;
+};
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(exact_umbra)
@@ -464,12 +479,9 @@ BOOST_AUTO_TEST_CASE(the_joint_area_agrees_with_sampling) {
 // joint_occlusion flag now says that its umbra has joint parts, and the curved sets are
 // those of exact_umbra; without the option the flag says only that shadows overlap.
 BOOST_AUTO_TEST_CASE(the_shadows_pipeline_carries_the_joint_umbrae) {
-  const Scene scene =
-      load_scene(std::string(PENUMBRA_SOURCE_DIR) + "/fixtures/scenes/linear-joint-umbra.json");
-  ShadowOptions options;
-  options.joint_umbrae = true;
-  const ShadowResult with = compute_shadows(scene, options);
-  const ShadowResult without = compute_shadows(scene);
+  const BothWays computed("linear-joint-umbra");
+  const Scene& scene = computed.scene;
+  const ShadowResult &with = computed.with, &without = computed.without;
   int curved = 0;
   for (std::size_t r = 0; r < with.receivers.size(); ++r) {
     const FaceShadow& exact = with.lights[0].faces[r];
@@ -519,12 +531,9 @@ BOOST_AUTO_TEST_CASE(the_shadows_pipeline_carries_the_joint_umbrae) {
 // scene; points in the hole belong to no set; and the top face's umbra is larger than the
 // straight one (the joint parts).
 BOOST_AUTO_TEST_CASE(a_mesh_face_with_a_hole_has_one_exact_umbra) {
-  const Scene scene =
-      load_scene(std::string(PENUMBRA_SOURCE_DIR) + "/fixtures/scenes/linear-joint-mesh.json");
-  ShadowOptions options;
-  options.joint_umbrae = true;
-  const ShadowResult with = compute_shadows(scene, options);
-  const ShadowResult without = compute_shadows(scene);
+  const BothWays computed("linear-joint-mesh");
+  const Scene& scene = computed.scene;
+  const ShadowResult &with = computed.with, &without = computed.without;
   const auto& tube = std::get<LinearLight>(scene.lights[0].source);
   const Point3 q1 = to_exact(tube.start), q2 = to_exact(tube.end);
   std::vector<ConvexPolyhedron> solids;
