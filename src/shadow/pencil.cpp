@@ -238,12 +238,15 @@ std::optional<std::pair<Rational, Rational>> Pencil::coordinates(const RationalP
 PencilTrace Pencil::trace(const Quadratic2& q) const {
   const Poly xu = Poly::linear(a0_.x(), a1_.x()), xv = Poly::linear(a0_.y(), a1_.y());
   const Poly yu = Poly::linear(b0_.x(), b1_.x()), yv = Poly::linear(b0_.y(), b1_.y());
-  // q(X + r Y) = c0 + c1 r + c2 r^2.
-  const Poly c2 = yu * yu * q.a + yu * yv * q.b + yv * yv * q.c;
-  const Poly c1 =
-      xu * yu * (2 * q.a) + (xu * yv + xv * yu) * q.b + xv * yv * (2 * q.c) + yu * q.d + yv * q.e;
-  const Poly c0 =
-      xu * xu * q.a + xu * xv * q.b + xv * xv * q.c + xu * q.d + xv * q.e + Poly::constant(q.f);
+  // q(X + r Y) = c0 + c1 r + c2 r^2 (for a line, c2 = 0 and no products of polynomials).
+  const bool line = q.straight();
+  const Poly c2 = line ? Poly() : yu * yu * q.a + yu * yv * q.b + yv * yv * q.c;
+  const Poly c1 = line ? yu * q.d + yv * q.e
+                       : xu * yu * (2 * q.a) + (xu * yv + xv * yu) * q.b + xv * yv * (2 * q.c) +
+                             yu * q.d + yv * q.e;
+  const Poly c0 = line ? xu * q.d + xv * q.e + Poly::constant(q.f)
+                       : xu * xu * q.a + xu * xv * q.b + xv * xv * q.c + xu * q.d + xv * q.e +
+                             Poly::constant(q.f);
   Poly num, den;
   PencilTrace trace;
   if (c2.zero()) {
