@@ -207,8 +207,8 @@ void emit_curved_region(JsonEmitter& out, const std::vector<CurvedPolygon>& poly
   for (const auto& [name, axis] : {std::pair{"u", &frame.u()}, std::pair{"v", &frame.v()}}) {
     out.key(name);
     out.begin_array();
-    const RationalVector3 exact = CGAL::exact(*axis);
-    for (int k = 0; k < 3; ++k) out.string(rational_string(exact[k]));
+    const RationalVector3 rational = CGAL::exact(*axis);
+    for (int k = 0; k < 3; ++k) out.string(rational_string(rational[k]));
     out.end_array();
   }
   out.end_object();

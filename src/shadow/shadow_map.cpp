@@ -259,7 +259,8 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   LightShading shading(scene, receivers, rank, light_index, options);
   const Light& light = shading.light();
   const auto& tube = std::get<LinearLight>(light.source);
-  const auto [q1, q2] = tube_ends(tube);
+  const std::pair<Point3, Point3> ends = tube_ends(tube);
+  const Point3 &q1 = ends.first, &q2 = ends.second;
 
   std::optional<LightingSphere> sphere;
   if (range_threshold(options) > 0)
