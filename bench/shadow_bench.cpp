@@ -97,6 +97,30 @@ void joint_umbrae_of_city(benchmark::State& state, const std::string& light) {
   state.counters["cells"] = static_cast<double>(cells);
 }
 
+// The same as the pipeline computes it (`shadows --joint-umbrae`): compute_shadows with
+// ShadowOptions::joint_umbrae, the exact umbrae inside the per-face work, TBB across faces,
+// as the single-occluder path is. Counter: faces with a joint part.
+void joint_umbrae_pipeline(benchmark::State& state, const std::string& light) {
+  const Scene& scene = scene_of(static_cast<int>(state.range(0)));
+  ShadowOptions options;
+  options.light = light;
+  options.joint_umbrae = true;
+  std::size_t joint = 0;
+  for (auto _ : state) {
+    const ShadowResult result = compute_shadows(scene, options);
+    joint = 0;
+    for (const FaceShadow& shadow : result.lights.front().faces) joint += bool(shadow.curved);
+  }
+  state.counters["joint_faces"] = static_cast<double>(joint);
+}
+
+void BM_JointUmbraePipelineTubeX(benchmark::State& state) {
+  joint_umbrae_pipeline(state, "tube_x");
+}
+void BM_JointUmbraePipelineTubeY(benchmark::State& state) {
+  joint_umbrae_pipeline(state, "tube_y");
+}
+
 void BM_JointUmbraeTubeX(benchmark::State& state) {
   joint_umbrae_of_city(state, "tube_x");
 }
@@ -122,3 +146,5 @@ BENCHMARK(BM_ShadowsTubeX)->Apply(city_sizes);
 BENCHMARK(BM_ShadowsTubeY)->Apply(city_sizes);
 BENCHMARK(BM_JointUmbraeTubeX)->Apply(city_sizes);
 BENCHMARK(BM_JointUmbraeTubeY)->Apply(city_sizes);
+BENCHMARK(BM_JointUmbraePipelineTubeX)->Apply(city_sizes);
+BENCHMARK(BM_JointUmbraePipelineTubeY)->Apply(city_sizes);
