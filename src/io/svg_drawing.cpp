@@ -5,6 +5,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include <gmpxx.h>
+
 #include "penumbra/io/shadow_json.h"
 #include "svg_text.h"
 
@@ -25,11 +27,9 @@ std::optional<std::vector<Flat>> project_ring(const json& ring, const Projection
 
 namespace {
 
+// a "p/q" string as a double, truncated (GMP: p and q of any size).
 double rational_value(const json& x) {
-  const std::string text = x.get<std::string>();
-  const auto slash = text.find('/');
-  if (slash == std::string::npos) return std::stod(text);
-  return std::stod(text.substr(0, slash)) / std::stod(text.substr(slash + 1));
+  return mpq_class(x.get<std::string>()).get_d();
 }
 
 // The map from a curved region's frame (s, t) to drawing coordinates under an affine

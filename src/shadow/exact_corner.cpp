@@ -69,15 +69,23 @@ AlgebraicCoordinate coordinate_of(const RootChoice& choice) {
   return result;
 }
 
-ExactCorner name_corner(const Quadratic2& before, const Quadratic2& after,
+// A corner named, with its coordinates' values (to compare corners without solving again).
+struct NamedCorner {
+  ExactCorner corner;
+  std::array<Algebraic, 2> values;
+};
+
+NamedCorner name_corner(const Quadratic2& before, const Quadratic2& after,
                         const CornerEnclosure& enclose) {
   ExactCorner corner;
   if (before.straight() && after.straight()) {
     const Rational det = before.d * after.e - before.e * after.d;
     if (CGAL::is_zero(det)) throw std::logic_error("exact_ring: consecutive parallel lines");
-    corner.s.value = exact_number((before.e * after.f - before.f * after.e) / det);
-    corner.t.value = exact_number((before.f * after.d - before.d * after.f) / det);
-    return corner;
+    const Rational s = (before.e * after.f - before.f * after.e) / det;
+    const Rational t = (before.f * after.d - before.d * after.f) / det;
+    corner.s.value = exact_number(s);
+    corner.t.value = exact_number(t);
+    return {corner, {algebraic(s), algebraic(t)}};
   }
   std::array<RootChoice, 2> choices;
   for (int k = 0; k < 2; ++k) {
@@ -102,7 +110,7 @@ ExactCorner name_corner(const Quadratic2& before, const Quadratic2& after,
     if (choices[0].chosen && choices[1].chosen) {
       corner.s = coordinate_of(choices[0]);
       corner.t = coordinate_of(choices[1]);
-      return corner;
+      return {corner, {choices[0].roots[*choices[0].chosen], choices[1].roots[*choices[1].chosen]}};
     }
   }
   throw std::logic_error("exact_ring: a corner's roots could not be told apart");
@@ -130,14 +138,19 @@ int compare(const ExactCorner& a, const ExactCorner& b) {
   return 0;
 }
 
-// compares edges by their corner, then curve.
-int compare(const ExactEdge& a, const ExactEdge& b) {
-  if (const int c = compare(a.from, b.from)) return c;
+// compares edges by their curves (after their corners).
+int compare_curves(const ExactEdge& a, const ExactEdge& b) {
   for (int k = 0; k < 6; ++k) {
     const Rational &p = CGAL::exact(a.curve[k]), &q = CGAL::exact(b.curve[k]);
     if (p != q) return p < q ? -1 : 1;
   }
   return 0;
+}
+
+// compares edges by their corner, then curve.
+int compare(const ExactEdge& a, const ExactEdge& b) {
+  if (const int c = compare(a.from, b.from)) return c;
+  return compare_curves(a, b);
 }
 
 bool ring_less(const std::vector<ExactEdge>& a, const std::vector<ExactEdge>& b) {
@@ -212,10 +225,13 @@ std::vector<ExactEdge> exact_ring(const std::vector<TracedEdge>& traced) {
   }
   if (edges.size() < 2) throw std::logic_error("exact_ring: a ring of one curve");
   std::vector<ExactEdge> ring;
+  std::vector<std::array<Algebraic, 2>> values;  // each corner's (s, t)
   for (std::size_t k = 0; k < edges.size(); ++k) {
     const Quadratic2& before = curves[(k + curves.size() - 1) % curves.size()];
     ExactEdge edge;
-    edge.from = name_corner(before, curves[k], edges[k]->start);
+    NamedCorner named = name_corner(before, curves[k], edges[k]->start);
+    edge.from = std::move(named.corner);
+    values.push_back(std::move(named.values));
     edge.curve = {exact_number(curves[k].a), exact_number(curves[k].b), exact_number(curves[k].c),
                   exact_number(curves[k].d), exact_number(curves[k].e), exact_number(curves[k].f)};
     edge.joint = edges[k]->joint;
@@ -223,7 +239,9 @@ std::vector<ExactEdge> exact_ring(const std::vector<TracedEdge>& traced) {
   }
   std::size_t first = 0;
   for (std::size_t k = 1; k < ring.size(); ++k)
-    if (compare(ring[k], ring[first]) < 0) first = k;
+    if (values[k] < values[first] ||
+        (values[k] == values[first] && compare_curves(ring[k], ring[first]) < 0))
+      first = k;
   std::rotate(ring.begin(), ring.begin() + first, ring.end());
   return ring;
 }
