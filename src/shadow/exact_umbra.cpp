@@ -18,7 +18,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <tuple>
 
@@ -29,9 +31,11 @@
 #include "exact_corner.h"
 #include "pencil.h"
 #include "penumbra/base/gauss_legendre.h"
+#include "penumbra/base/parallel.h"
 #include "penumbra/geometry/interval.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/linear_volumes.h"
+#include "region_set.h"
 
 namespace penumbra {
 namespace {
@@ -140,9 +144,9 @@ struct RingPiece {
 // the rings of one polygon: the outer ring, then its holes.
 using PolygonPieces = std::vector<std::vector<RingPiece>>;
 
-}  // namespace
-
-struct ExactUmbra::Impl {
+// The sweep of one group of occluders whose whole shadows touch (exact_umbra: groups whose
+// shadows are strictly apart cannot hide the source together, so each is swept alone).
+struct SweptPart {
   bool whole = false;  // no part of the source is visible: the whole face
   detail::FaceRegion face;
   FaceFrame frame;
@@ -212,7 +216,7 @@ struct ExactUmbra::Impl {
     return detail::RationalBox{*s, *t};
   }
 
-  // the polygons of pieces in exact canonical form.
+  // the polygons of pieces in exact form (each ring canonical; their order is not).
   std::vector<ExactCurvedPolygon> exact_polygons(const std::vector<PolygonPieces>& pieces) const {
     const auto ring = [&](const std::vector<RingPiece>& traced) {
       std::vector<detail::TracedEdge> edges;
@@ -231,7 +235,6 @@ struct ExactUmbra::Impl {
       for (std::size_t k = 1; k < polygon.size(); ++k) exact.holes.push_back(ring(polygon[k]));
       result.push_back(std::move(exact));
     }
-    detail::canonical_order(result);
     return result;
   }
 
@@ -248,12 +251,10 @@ struct ExactUmbra::Impl {
   }
 };
 
-namespace {
-
 class Sweep {
  public:
-  Sweep(ExactUmbra::Impl& impl, const Face& face, const RationalPoint3& q1,
-        const RationalPoint3& q2, const std::vector<UmbraOccluder>& occluders)
+  Sweep(SweptPart& impl, const Face& face, const RationalPoint3& q1, const RationalPoint3& q2,
+        const std::vector<UmbraOccluder>& occluders)
       : impl_(impl), face_(face), q1_(q1), q2_(q2) {
     for (const UmbraOccluder& occluder : occluders) {
       solids_.push_back(detail::rational_solid(*occluder.solid));
@@ -421,6 +422,8 @@ class Sweep {
       const auto& inner = umbra->points();
       for (std::size_t k = 0; k < inner.size(); ++k)
         add_line(line_through(inner[k], inner[(k + 1) % inner.size()]), umbra, false);
+      // The rest only matters in W, which needs two occluders.
+      if (occluders.size() < 2) continue;
       for (int end = 0; end < 2; ++end) {
         std::vector<detail::FilteredAffine> volume;
         for (const Plane3& plane : point_shadow_volume(*occluders[o].solid, end ? q2 : q1).planes) {
@@ -717,7 +720,7 @@ class Sweep {
     }
   }
 
-  ExactUmbra::Impl& impl_;
+  SweptPart& impl_;
   const Face& face_;
   RationalPoint3 q1_, q2_;
   std::vector<detail::RationalSolid> solids_;
@@ -777,8 +780,8 @@ UmbraArc arc_of(const Curve& curve) {
 // The boundary pieces of one sector: curve pieces inside columns, merged along a curve
 // across columns, and pieces of pencil lines at the seams between slabs. Each piece keeps
 // its exact ends for chaining.
-void trace_boundary(const ExactUmbra::Impl& impl, int sector_index, double tolerance,
-                    const Sector* next, char kind, std::vector<BoundaryPiece>& pieces) {
+void trace_boundary(const SweptPart& impl, int sector_index, double tolerance, const Sector* next,
+                    char kind, std::vector<BoundaryPiece>& pieces) {
   const Sector& sector = impl.sectors[sector_index];
   const Pencil& pencil = sector.pencil;
   struct Open {
@@ -890,7 +893,7 @@ void trace_boundary(const ExactUmbra::Impl& impl, int sector_index, double toler
 
 // the exact r of a piece's end, when its s is the rational s: the ray's own r, or the
 // curve's value there.
-std::optional<Rational> r_of(const ExactUmbra::Impl& impl, const PieceEnd& end, const Rational& s) {
+std::optional<Rational> r_of(const SweptPart& impl, const PieceEnd& end, const Rational& s) {
   if (end.curve < 0) return end.r;
   return r_at(impl.curves[end.curve], s);
 }
@@ -898,7 +901,7 @@ std::optional<Rational> r_of(const ExactUmbra::Impl& impl, const PieceEnd& end, 
 // true when two ends of pieces are the same point, decided exactly: on the same line of the
 // pencil (the same sector and s, or the seam between two quadrants) at the same r, or both
 // at the centre.
-bool same_point(const ExactUmbra::Impl& impl, const PieceEnd& a, const PieceEnd& b) {
+bool same_point(const SweptPart& impl, const PieceEnd& a, const PieceEnd& b) {
   const bool finite = impl.sectors[a.sector].pencil.finite();
   if (finite && a.curve < 0 && b.curve < 0 && CGAL::is_zero(*a.r) && CGAL::is_zero(*b.r))
     return true;                   // the centre
@@ -937,7 +940,7 @@ bool same_point(const ExactUmbra::Impl& impl, const PieceEnd& a, const PieceEnd&
 // same_point among the starts near it in doubles), outer rings counter-clockwise and holes
 // clockwise, each hole in the smallest outer ring around it.
 std::pair<std::vector<CurvedPolygon>, std::vector<PolygonPieces>> chain(
-    const ExactUmbra::Impl& impl, std::vector<BoundaryPiece> pieces, double scale) {
+    const SweptPart& impl, std::vector<BoundaryPiece> pieces, double scale) {
   std::vector<CurvedRing> rings;
   std::vector<std::vector<RingPiece>> ring_pieces;
   std::vector<bool> used(pieces.size(), false);
@@ -1041,7 +1044,7 @@ struct ShiftedCurve {
 
 // the umbra's area in one sector: per column, the integral over s of the cells' extent
 // (adaptive Gauss-Legendre; scale: the face's area, for the absolute tolerance).
-double sector_area(const ExactUmbra::Impl& impl, const Sector& sector, double scale, char kind) {
+double sector_area(const SweptPart& impl, const Sector& sector, double scale, char kind) {
   const Pencil& pencil = sector.pencil;
   const QuadratureRule rule = gauss_legendre(12);
   double total = 0;
@@ -1099,8 +1102,7 @@ double sector_area(const ExactUmbra::Impl& impl, const Sector& sector, double sc
 namespace {
 
 // true when p lies in the closure of the cells of the kind.
-bool in_cells(const ExactUmbra::Impl& impl, const Point2& point, char kind) {
-  const RationalPoint2 p = rational_point(point);
+bool in_cells(const SweptPart& impl, const RationalPoint2& p, char kind) {
   if (!impl.face.contains(p)) return false;
   if (impl.whole) return kind == kUmbra;
   if (impl.centre && p == *impl.centre) return kind == kUmbra && impl.centre_label;
@@ -1115,83 +1117,15 @@ bool in_cells(const ExactUmbra::Impl& impl, const Point2& point, char kind) {
   return false;
 }
 
-}  // namespace
-
-bool ExactUmbra::contains(const Point2& point) const {
-  return in_cells(*impl_, point, kUmbra);
-}
-
-bool ExactUmbra::in_penumbra(const Point2& point) const {
-  return in_cells(*impl_, point, kPenumbra);
-}
-
-double ExactUmbra::area() const {
-  return impl_->area;
-}
-
-const std::vector<UmbraArc>& ExactUmbra::boundary() const {
-  return impl_->boundary;
-}
-
-const std::vector<CurvedPolygon>& ExactUmbra::umbra_polygons() const {
-  return impl_->umbra_polygons;
-}
-
-const std::vector<CurvedPolygon>& ExactUmbra::penumbra_polygons() const {
-  return impl_->penumbra_polygons;
-}
-
-std::vector<ExactCurvedPolygon> ExactUmbra::exact_umbra_polygons() const {
-  return impl_->exact_polygons(impl_->umbra_pieces);
-}
-
-std::vector<ExactCurvedPolygon> ExactUmbra::exact_penumbra_polygons() const {
-  return impl_->exact_polygons(impl_->penumbra_pieces);
-}
-
-double ExactUmbra::penumbra_area() const {
-  return impl_->penumbra_area;
-}
-
-const std::vector<UmbraArc>& ExactUmbra::penumbra_boundary() const {
-  return impl_->penumbra_boundary;
-}
-
-bool ExactUmbra::joint() const {
-  return impl_->joint;
-}
-
-std::size_t ExactUmbra::cells() const {
-  return impl_->cells;
-}
-
-ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
-                       const std::vector<UmbraOccluder>& occluders, double tolerance) {
-  return exact_umbra(face, {face.ring}, {face.ring}, q1, q2, occluders, tolerance);
-}
-
-ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
-                       const std::vector<Ring2>& boundary, const Point3& q1, const Point3& q2,
-                       const std::vector<UmbraOccluder>& occluders, double tolerance) {
-  auto impl = std::make_shared<ExactUmbra::Impl>();
-  const auto rational_ring = [](const Ring2& ring) {
-    std::vector<RationalPoint2> points;
-    for (const Point2& p : ring) points.push_back(rational_point(p));
-    return points;
-  };
-  std::vector<ConvexRing> convex;
-  for (const Ring2& piece : pieces) convex.emplace_back(rational_ring(piece));
-  std::vector<std::vector<RationalPoint2>> rings;
-  for (const Ring2& ring : boundary) rings.push_back(rational_ring(ring));
-  impl->face = detail::FaceRegion(std::move(convex), std::move(rings));
+// sweeps the occluders (one touching group) on face (region: its pieces and rings) under the
+// visible source ab.
+std::shared_ptr<const SweptPart> sweep_part(const Face& face, const detail::FaceRegion& region,
+                                            const RationalPoint3& a, const RationalPoint3& b,
+                                            const std::vector<UmbraOccluder>& occluders,
+                                            double tolerance) {
+  auto impl = std::make_shared<SweptPart>();
+  impl->face = region;
   impl->frame = face.frame;
-  const auto source = visible_source(face, q1, q2);
-  if (!source) {
-    impl->whole = true;
-    impl->area = CGAL::to_double(face.area);
-    return ExactUmbra(std::move(impl));
-  }
-  const RationalPoint3 a = CGAL::exact(source->q1), b = CGAL::exact(source->q2);
   const RationalPlane3 plane = CGAL::exact(face.plane);
   const Rational f1 = plane_value(plane, a), f2 = plane_value(plane, b);
   if (f1 != f2) {
@@ -1239,7 +1173,145 @@ ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
   std::tie(impl->umbra_polygons, impl->umbra_pieces) = chain(*impl, std::move(umbra_pieces), size);
   std::tie(impl->penumbra_polygons, impl->penumbra_pieces) =
       chain(*impl, std::move(penumbra_pieces), size);
-  return ExactUmbra(std::move(impl));
+  return impl;
+}
+
+}  // namespace
+
+// The sets of a face: the parts of its touching groups of occluders, whose shadows are
+// strictly apart, so the sets are the disjoint unions of the parts' sets.
+struct ExactUmbra::Impl {
+  std::vector<std::shared_ptr<const SweptPart>> parts;
+  double area = 0, penumbra_area = 0;
+  std::vector<UmbraArc> boundary, penumbra_boundary;
+  std::vector<CurvedPolygon> umbra_polygons, penumbra_polygons;
+  bool joint = false;
+  std::size_t cells = 0;
+
+  explicit Impl(std::vector<std::shared_ptr<const SweptPart>> swept) : parts(std::move(swept)) {
+    const auto append = [](auto& to, const auto& from) {
+      to.insert(to.end(), from.begin(), from.end());
+    };
+    for (const auto& part : parts) {
+      area += part->area;
+      penumbra_area += part->penumbra_area;
+      append(boundary, part->boundary);
+      append(penumbra_boundary, part->penumbra_boundary);
+      append(umbra_polygons, part->umbra_polygons);
+      append(penumbra_polygons, part->penumbra_polygons);
+      joint = joint || part->joint;
+      cells += part->cells;
+    }
+  }
+
+  bool in_cells(const Point2& point, char kind) const {
+    const RationalPoint2 p = rational_point(point);
+    return std::any_of(parts.begin(), parts.end(),
+                       [&](const auto& part) { return penumbra::in_cells(*part, p, kind); });
+  }
+
+  std::vector<ExactCurvedPolygon> exact_polygons(
+      std::vector<PolygonPieces> SweptPart::*pieces) const {
+    std::vector<ExactCurvedPolygon> result;
+    for (const auto& part : parts) {
+      std::vector<ExactCurvedPolygon> polygons = part->exact_polygons((*part).*pieces);
+      std::move(polygons.begin(), polygons.end(), std::back_inserter(result));
+    }
+    detail::canonical_order(result);
+    return result;
+  }
+};
+
+bool ExactUmbra::contains(const Point2& point) const {
+  return impl_->in_cells(point, kUmbra);
+}
+
+bool ExactUmbra::in_penumbra(const Point2& point) const {
+  return impl_->in_cells(point, kPenumbra);
+}
+
+double ExactUmbra::area() const {
+  return impl_->area;
+}
+
+const std::vector<UmbraArc>& ExactUmbra::boundary() const {
+  return impl_->boundary;
+}
+
+const std::vector<CurvedPolygon>& ExactUmbra::umbra_polygons() const {
+  return impl_->umbra_polygons;
+}
+
+const std::vector<CurvedPolygon>& ExactUmbra::penumbra_polygons() const {
+  return impl_->penumbra_polygons;
+}
+
+std::vector<ExactCurvedPolygon> ExactUmbra::exact_umbra_polygons() const {
+  return impl_->exact_polygons(&SweptPart::umbra_pieces);
+}
+
+std::vector<ExactCurvedPolygon> ExactUmbra::exact_penumbra_polygons() const {
+  return impl_->exact_polygons(&SweptPart::penumbra_pieces);
+}
+
+double ExactUmbra::penumbra_area() const {
+  return impl_->penumbra_area;
+}
+
+const std::vector<UmbraArc>& ExactUmbra::penumbra_boundary() const {
+  return impl_->penumbra_boundary;
+}
+
+bool ExactUmbra::joint() const {
+  return impl_->joint;
+}
+
+std::size_t ExactUmbra::cells() const {
+  return impl_->cells;
+}
+
+ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
+                       const std::vector<UmbraOccluder>& occluders, double tolerance) {
+  return exact_umbra(face, {face.ring}, {face.ring}, q1, q2, occluders, tolerance);
+}
+
+ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
+                       const std::vector<Ring2>& boundary, const Point3& q1, const Point3& q2,
+                       const std::vector<UmbraOccluder>& occluders, double tolerance) {
+  const auto rational_ring = [](const Ring2& ring) {
+    std::vector<RationalPoint2> points;
+    for (const Point2& p : ring) points.push_back(rational_point(p));
+    return points;
+  };
+  std::vector<ConvexRing> convex;
+  for (const Ring2& piece : pieces) convex.emplace_back(rational_ring(piece));
+  std::vector<std::vector<RationalPoint2>> rings;
+  for (const Ring2& ring : boundary) rings.push_back(rational_ring(ring));
+  const detail::FaceRegion region(std::move(convex), std::move(rings));
+  const auto source = visible_source(face, q1, q2);
+  if (!source) {
+    auto whole = std::make_shared<SweptPart>();
+    whole->whole = true;
+    whole->face = region;
+    whole->frame = face.frame;
+    whole->area = CGAL::to_double(face.area);
+    return ExactUmbra(std::make_shared<const ExactUmbra::Impl>(
+        std::vector<std::shared_ptr<const SweptPart>>{std::move(whole)}));
+  }
+  const RationalPoint3 a = CGAL::exact(source->q1), b = CGAL::exact(source->q2);
+  // Occluders whose whole shadows are strictly apart never hide the source together: each
+  // touching group is swept on its own (in parallel), and none sweeps the others' lines.
+  std::vector<Ring2> shadows;
+  for (const UmbraOccluder& occluder : occluders) shadows.push_back(occluder.shadow);
+  const auto groups = detail::touching_groups(shadows);
+  std::vector<std::shared_ptr<const SweptPart>> parts(groups.size());
+  for_each_index(groups.size(), true, [&](std::size_t g) {
+    std::vector<UmbraOccluder> group;
+    for (std::size_t k : groups[g]) group.push_back(occluders[k]);
+    parts[g] = sweep_part(face, region, a, b, group, tolerance);
+  });
+  if (parts.empty()) parts.push_back(sweep_part(face, region, a, b, {}, tolerance));
+  return ExactUmbra(std::make_shared<const ExactUmbra::Impl>(std::move(parts)));
 }
 
 }  // namespace penumbra

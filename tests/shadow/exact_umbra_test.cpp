@@ -435,6 +435,55 @@ BOOST_AUTO_TEST_CASE(apart_occluders_give_the_straight_umbra) {
   compare_with_oracle(face, q1, q2, solids, umbra, 200, 3);
 }
 
+// Occluders in groups whose shadows are strictly apart are swept group by group (exact_umbra.h):
+// two pairs of boards at opposite corners of the floor, each pair closing its gap under a
+// tube parallel to the floor, so each group has a joint part of its own. Membership agrees
+// with the oracle across the floor and across every arc, and the sets are the disjoint unions
+// of the groups' own sets (the exact polygons, in canonical order, and the areas).
+BOOST_AUTO_TEST_CASE(groups_whose_shadows_are_apart_are_swept_apart) {
+  const Face& face = floor_face();
+  const Point3 q1(-1, 0, 4), q2(1, 0, 4);
+  const std::vector<ConvexPolyhedron> near{box(-5, -5, 1.5, -4.1, -2, 2),
+                                           box(-4, -5, 1.5, -3, -2, 2)};
+  const std::vector<ConvexPolyhedron> far{box(3, 2, 1.5, 4, 5, 2), box(4.1, 2, 1.5, 5, 5, 2)};
+  std::vector<ConvexPolyhedron> solids = near;
+  solids.insert(solids.end(), far.begin(), far.end());
+  // The groups' shadows are apart: the straight shadow has one polygon per group.
+  std::vector<Occluder> occluders;
+  for (std::size_t k = 0; k < solids.size(); ++k) occluders.push_back({k, &solids[k]});
+  BOOST_TEST(linear_face_shadow(face, q1, q2, occluders).shadow.polygons.size() == 2u);
+  const ExactUmbra umbra = umbra_of(face, q1, q2, solids);
+  const ExactUmbra near_umbra = umbra_of(face, q1, q2, near);
+  const ExactUmbra far_umbra = umbra_of(face, q1, q2, far);
+  BOOST_TEST(near_umbra.joint());
+  BOOST_TEST(far_umbra.joint());
+  int mismatches = 0;
+  const int inside = compare_with_oracle(face, q1, q2, solids, umbra, 1500, 41, &mismatches);
+  BOOST_TEST(mismatches == 0);
+  BOOST_TEST(inside >= 20);
+  const int arcs = check_across_arcs(face, q1, q2, solids, umbra);
+  BOOST_TEST(arcs >= 2);
+  BOOST_TEST_MESSAGE(inside << " sampled points in the umbra, " << arcs << " arcs crossed");
+  // The union, written out: each group's polygons, sorted together.
+  for (const bool penumbra : {false, true}) {
+    const auto exact = [&](const ExactUmbra& u) {
+      return penumbra ? u.exact_penumbra_polygons() : u.exact_umbra_polygons();
+    };
+    auto both = exact(near_umbra);
+    const auto other = exact(far_umbra);
+    both.insert(both.end(), other.begin(), other.end());
+    BOOST_TEST(both.size() == exact(umbra).size());
+    std::sort(both.begin(), both.end(),
+              [&](const auto& a, const auto& b) { return written({a}) < written({b}); });
+    auto whole = exact(umbra);
+    std::sort(whole.begin(), whole.end(),
+              [&](const auto& a, const auto& b) { return written({a}) < written({b}); });
+    BOOST_TEST(written(whole) == written(both));
+  }
+  const double expected = near_umbra.area() + far_umbra.area();
+  BOOST_TEST(std::abs(umbra.area() - expected) <= 1e-12 * expected);
+}
+
 BOOST_AUTO_TEST_CASE(an_l_shaped_occluder_in_two_pieces_and_a_row_of_slats) {
   const Face& face = floor_face();
   // An L of two boxes sharing the face x = 0: pieces of one object, blocking together.

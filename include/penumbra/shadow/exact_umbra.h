@@ -136,8 +136,10 @@ class ExactUmbra {
 // face's plane, Fig. 7 S3) under the convex occluders: the single umbrae (straight, the
 // occluders' umbra rings) and the joint part, which the sweep finds where two occluders'
 // whole shadows overlap and both ends of the source are hidden (elsewhere at most one
-// occluder hides anything, or some end is seen). tolerance: the densified boundary's chord
-// error, in world units. Precondition: the visible part of the source meets no occluder.
+// occluder hides anything, or some end is seen). Occluders whose shadows are strictly apart
+// are swept in separate groups, in parallel (docs/linear-shadows.md, "Groups swept apart").
+// tolerance: the densified boundary's chord error, in world units. Precondition: the visible
+// part of the source meets no occluder.
 ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
                        const std::vector<UmbraOccluder>& occluders, double tolerance = 1e-6);
 
