@@ -35,6 +35,7 @@
 #include "penumbra/geometry/interval.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/linear_volumes.h"
+#include "receiver_clip.h"
 #include "region_set.h"
 
 namespace penumbra {
@@ -62,11 +63,13 @@ RationalPoint2 rational_point(const Point2& p) {
   return CGAL::exact(p);
 }
 
-// the affine function g . P + h of the face's points, in frame coordinates.
+// the affine function g . P + h of the face's points, in frame coordinates (the frames of
+// axis-aligned faces are mostly zeros: sparse_dot skips them).
 Affine2 on_face(const FaceFrame& frame, const RationalVector3& g, const Rational& h) {
-  const RationalVector3 u = CGAL::exact(frame.u()), v = CGAL::exact(frame.v());
-  const RationalPoint3 o = CGAL::exact(frame.origin());
-  return {g * u, g * v, g * (o - CGAL::ORIGIN) + h};
+  const RationalVector3& u = CGAL::exact(frame.u());
+  const RationalVector3& v = CGAL::exact(frame.v());
+  const RationalPoint3& o = CGAL::exact(frame.origin());
+  return {detail::sparse_dot(g, u), detail::sparse_dot(g, v), detail::sparse_dot(g, o) + h};
 }
 
 Affine2 on_face(const FaceFrame& frame, const RationalPlane3& plane) {
@@ -110,7 +113,8 @@ struct Column {
 struct Sector {
   Pencil pencil;
   std::vector<Column> columns;
-  std::vector<Rational> seams;  // the slab bounds (rational), increasing
+  std::vector<Rational> seams;         // the slab bounds (rational), increasing
+  std::vector<Algebraic> seam_values;  // the same as algebraic numbers, made once
 };
 
 // the value of a curve of a column at s: nullopt at a pole.
@@ -143,6 +147,39 @@ struct RingPiece {
 };
 // the rings of one polygon: the outer ring, then its holes.
 using PolygonPieces = std::vector<std::vector<RingPiece>>;
+
+}  // namespace
+
+// An occluder prepared for one source: its exact and interval forms, and in world
+// coordinates the planes of its point shadow volumes from each end and the plane through the
+// source and each vertex (where the solid's slice by the planes through the source changes).
+struct UmbraSolid {
+  RationalPoint3 q1, q2;
+  detail::RationalSolid solid;
+  detail::IntervalSolid filter;
+  std::array<std::vector<RationalPlane3>, 2> ends;
+  std::vector<RationalPlane3> rays;
+};
+
+std::shared_ptr<const UmbraSolid> prepare_umbra_solid(const ConvexPolyhedron& solid,
+                                                      const Point3& q1, const Point3& q2) {
+  auto prepared = std::make_shared<UmbraSolid>();
+  prepared->q1 = CGAL::exact(q1);
+  prepared->q2 = CGAL::exact(q2);
+  prepared->solid = detail::rational_solid(solid);
+  prepared->filter = detail::interval_solid(prepared->solid);
+  for (int end = 0; end < 2; ++end)
+    for (const Plane3& plane : point_shadow_volume(solid, end ? q2 : q1).planes)
+      prepared->ends[end].push_back(CGAL::exact(plane));
+  const RationalVector3 d = prepared->q2 - prepared->q1;
+  for (const RationalPoint3& v : prepared->solid.vertices) {
+    const RationalVector3 g = CGAL::cross_product(d, v - prepared->q1);
+    prepared->rays.emplace_back(g.x(), g.y(), g.z(), -(g * (prepared->q1 - CGAL::ORIGIN)));
+  }
+  return prepared;
+}
+
+namespace {
 
 // The sweep of one group of occluders whose whole shadows touch (exact_umbra: groups whose
 // shadows are strictly apart cannot hide the source together, so each is swept alone).
@@ -257,8 +294,12 @@ class Sweep {
         const std::vector<UmbraOccluder>& occluders)
       : impl_(impl), face_(face), q1_(q1), q2_(q2) {
     for (const UmbraOccluder& occluder : occluders) {
-      solids_.push_back(detail::rational_solid(*occluder.solid));
-      filters_.push_back(detail::interval_solid(solids_.back()));
+      // prepared for this source (the face's plane does not cut it), or made here
+      const auto& ready = occluder.prepared;
+      prepared_.push_back(ready && ready->q1 == q1 && ready->q2 == q2
+                              ? ready
+                              : prepare_umbra_solid(*occluder.solid, from_exact<Point3>(q1),
+                                                    from_exact<Point3>(q2)));
       std::vector<RationalPoint2> ring;
       for (const Point2& p : occluder.shadow) ring.push_back(rational_point(p));
       shadows_.emplace_back(std::move(ring));
@@ -310,6 +351,7 @@ class Sweep {
                     [&](const Rational& s) { return s < pencil.s_low() || s > pencil.s_high(); }),
                 seams.end());
     sector.seams = seams;
+    for (const Rational& s : seams) sector.seam_values.push_back(algebraic(s));
 
     // Curves of the lines, registered once per sector.
     std::vector<int> line_ids;
@@ -322,7 +364,7 @@ class Sweep {
       line_enclosures.emplace_back(line_traces[k]);
     }
     for (std::size_t k = 0; k + 1 < seams.size(); ++k)
-      slab(sector, seams[k], seams[k + 1], line_curves, line_ids, line_enclosures);
+      slab(sector, k, line_curves, line_ids, line_enclosures);
   }
 
  private:
@@ -411,8 +453,6 @@ class Sweep {
     for (const auto& ring : impl_.face.boundary())
       for (std::size_t k = 0; k < ring.size(); ++k)
         add_line(line_through(ring[k], ring[(k + 1) % ring.size()]), nullptr, false);
-    const Point3 q1 = from_exact<Point3>(q1_), q2 = from_exact<Point3>(q2_);
-    const RationalVector3 d = q2_ - q1_;
     for (std::size_t o = 0; o < occluders.size(); ++o) {
       const ConvexRing* region = &shadows_[o];
       const auto& outer = region->points();
@@ -424,24 +464,22 @@ class Sweep {
         add_line(line_through(inner[k], inner[(k + 1) % inner.size()]), umbra, false);
       // The rest only matters in W, which needs two occluders.
       if (occluders.size() < 2) continue;
+      const UmbraSolid& prepared = *prepared_[o];
       for (int end = 0; end < 2; ++end) {
         std::vector<detail::FilteredAffine> volume;
-        for (const Plane3& plane : point_shadow_volume(*occluders[o].solid, end ? q2 : q1).planes) {
-          volume.emplace_back(on_face(frame, CGAL::exact(plane)));
+        for (const RationalPlane3& plane : prepared.ends[end]) {
+          volume.emplace_back(on_face(frame, plane));
           add_line(volume.back().exact(), region, true);
         }
         end_shadows_[end].push_back(std::move(volume));
       }
-      for (const RationalPlane3& plane : solids_[o].planes)
+      for (const RationalPlane3& plane : prepared.solid.planes)
         add_line(on_face(frame, plane), region, true);
-      // The pencil line through each vertex: where the slice of the solid by the planes
-      // through the source changes.
-      for (const RationalPoint3& v : solids_[o].vertices) {
-        const RationalVector3 g = CGAL::cross_product(d, v - q1_);
-        rays_.push_back(on_face(frame, g, -(g * (q1_ - CGAL::ORIGIN))));
-      }
+      for (const RationalPlane3& ray : prepared.rays) rays_.push_back(on_face(frame, ray));
     }
   }
+
+  const detail::RationalSolid& solid(std::size_t k) const { return prepared_[k]->solid; }
 
   RationalPoint3 world(const RationalPoint2& p) const { return face_.frame.to_world(p); }
 
@@ -487,11 +525,11 @@ class Sweep {
     {
       CGAL::Protect_FPU_rounding<true> upward;
       const IntervalPoint at = detail::interval_point(x);
-      std::vector<detail::BlockedBounds> bounds(solids_.size());
+      std::vector<detail::BlockedBounds> bounds(prepared_.size());
       bool certain = true;
-      for (std::size_t k = 0; k < solids_.size() && certain; ++k) {
+      for (std::size_t k = 0; k < prepared_.size() && certain; ++k) {
         if (!shadows_[k].contains(p)) continue;
-        const auto b = detail::blocked_bounds(filters_[k], at, q1i_, q2i_);
+        const auto b = detail::blocked_bounds(prepared_[k]->filter, at, q1i_, q2i_);
         if (b)
           bounds[k] = *b;
         else
@@ -508,20 +546,20 @@ class Sweep {
   std::vector<BlockedInterval> ends(const Probe& p) const {
     const RationalPoint3 x = world(p.point);
     const IntervalPoint at = detail::interval_point(x);  // (to_interval rounds outward itself)
-    std::vector<BlockedInterval> result(solids_.size());
-    for (std::size_t k = 0; k < solids_.size(); ++k) {
+    std::vector<BlockedInterval> result(prepared_.size());
+    for (std::size_t k = 0; k < prepared_.size(); ++k) {
       if (!shadows_[k].contains(p)) continue;
       std::optional<detail::BlockedBounds> b;
       {
         CGAL::Protect_FPU_rounding<true> upward;
-        b = detail::blocked_bounds(filters_[k], at, q1i_, q2i_);
+        b = detail::blocked_bounds(prepared_[k]->filter, at, q1i_, q2i_);
       }
       if (b) {
         result[k].kind = b->kind;
         result[k].low_edge = b->low_edge;
         result[k].high_edge = b->high_edge;
       } else {
-        result[k] = detail::blocked_interval(solids_[k], x, q1_, q2_);
+        result[k] = detail::blocked_interval(solid(k), x, q1_, q2_);
       }
     }
     return result;
@@ -531,11 +569,11 @@ class Sweep {
   // nothing, without clipping.
   std::vector<BlockedInterval> blocked(const Probe& p) const {
     std::optional<RationalPoint3> x;
-    std::vector<BlockedInterval> result(solids_.size());
-    for (std::size_t k = 0; k < solids_.size(); ++k) {
+    std::vector<BlockedInterval> result(prepared_.size());
+    for (std::size_t k = 0; k < prepared_.size(); ++k) {
       if (!shadows_[k].contains(p)) continue;
       if (!x) x = world(p.point);
-      result[k] = detail::blocked_interval(solids_[k], *x, q1_, q2_);
+      result[k] = detail::blocked_interval(solid(k), *x, q1_, q2_);
     }
     return result;
   }
@@ -585,9 +623,9 @@ class Sweep {
   // the conic t_high(j) = t_low(k) of the edges f of occluder j and e of occluder k.
   Quadratic2 gap_quadratic(std::size_t j, int f, std::size_t k, int e) const {
     auto parameter = [&](std::size_t o, int edge) {
-      const auto& ends = solids_[o].edges[edge];
-      const detail::EdgeParameter t = detail::edge_parameter(
-          solids_[o].vertices[ends[0]], solids_[o].vertices[ends[1]], q1_, q2_);
+      const auto& ends = solid(o).edges[edge];
+      const detail::EdgeParameter t =
+          detail::edge_parameter(solid(o).vertices[ends[0]], solid(o).vertices[ends[1]], q1_, q2_);
       return std::make_pair(on_face(face_.frame, t.gn, t.hn), on_face(face_.frame, t.gd, t.hd));
     };
     const auto [nf, df] = parameter(j, f);
@@ -602,10 +640,12 @@ class Sweep {
     std::vector<int> conics;
   };
 
-  void slab(Sector& sector, const Rational& sa, const Rational& sb,
-            const std::vector<std::size_t>& line_curves, const std::vector<int>& line_ids,
+  // sweeps the slab between the seams seam and seam + 1 of the sector.
+  void slab(Sector& sector, std::size_t seam, const std::vector<std::size_t>& line_curves,
+            const std::vector<int>& line_ids,
             const std::vector<detail::IntervalCurve>& line_enclosures) {
     const Pencil& pencil = sector.pencil;
+    const Rational &sa = sector.seams[seam], &sb = sector.seams[seam + 1];
     const Rational middle = detail::simplest_between(sa, sb);
     // The lines that matter on this slab, in increasing r.
     std::vector<std::pair<Rational, int>> ordered;
@@ -669,7 +709,7 @@ class Sweep {
         for (std::size_t b = a + 1; b < portion.conics.size(); ++b)
           crossings.push_back(&crossing_roots(c, portion.conics[b]));
       }
-    const Algebraic low = algebraic(sa), high = algebraic(sb);
+    const Algebraic &low = sector.seam_values[seam], &high = sector.seam_values[seam + 1];
     std::vector<Algebraic> cuts{low, high};
     for (const std::vector<Algebraic>* roots : crossings)
       for (const Algebraic& root : *roots)
@@ -723,8 +763,7 @@ class Sweep {
   SweptPart& impl_;
   const Face& face_;
   RationalPoint3 q1_, q2_;
-  std::vector<detail::RationalSolid> solids_;
-  std::vector<detail::IntervalSolid> filters_;
+  std::vector<std::shared_ptr<const UmbraSolid>> prepared_;
   IntervalPoint q1i_ = detail::interval_point(q1_);
   IntervalPoint q2i_ = detail::interval_point(q2_);
   std::vector<ConvexRing> shadows_;
@@ -879,7 +918,7 @@ void trace_boundary(const SweptPart& impl, int sector_index, double tolerance, c
   if (!next) seam(nullptr, first, pencil.s_low(), pencil.s_low());
   std::size_t c = 0;
   for (std::size_t k = 1; k + 1 < sector.seams.size(); ++k) {
-    const Algebraic at = algebraic(sector.seams[k]);
+    const Algebraic& at = sector.seam_values[k];
     while (c + 1 < columns.size() && columns[c].high < at) ++c;
     seam(&columns[c], &columns[c + 1], sector.seams[k], sector.seams[k]);
   }
@@ -1128,12 +1167,13 @@ std::shared_ptr<const SweptPart> sweep_part(const Face& face, const detail::Face
   impl->frame = face.frame;
   const RationalPlane3 plane = CGAL::exact(face.plane);
   const Rational f1 = plane_value(plane, a), f2 = plane_value(plane, b);
+  const RationalVector2 axes[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
   if (f1 != f2) {
     // The source's line meets the face's plane at x0: four quadrants of directions.
     impl->centre = face.frame.to_frame(a + (f1 / (f1 - f2)) * (b - a));
-    const RationalVector2 axes[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
     for (int k = 0; k < 4; ++k)
-      impl->sectors.push_back({Pencil::cone(*impl->centre, axes[k], axes[(k + 1) % 4]), {}, {}});
+      impl->sectors.push_back(
+          {Pencil::cone(*impl->centre, axes[k], axes[(k + 1) % 4]), {}, {}, {}});
   } else {
     // Parallel to the face: lines along the source's direction, across the face.
     const RationalVector3 d = b - a;
@@ -1146,10 +1186,25 @@ std::shared_ptr<const SweptPart> sweep_part(const Face& face, const detail::Face
       if (!low || s < *low) low = s;
       if (!high || s > *high) high = s;
     }
-    impl->sectors.push_back({Pencil::parallel(delta, *low, *high), {}, {}});
+    impl->sectors.push_back({Pencil::parallel(delta, *low, *high), {}, {}, {}});
+  }
+  // A quadrant beyond the face's extent along either of its axes holds none of the face:
+  // it is not swept (no columns: no cell and no boundary there).
+  std::vector<bool> meets(impl->sectors.size(), true);
+  if (impl->centre) {
+    std::array<std::optional<Rational>, 4> extent;  // the largest (p - x0) . axis
+    for (const RationalPoint2& p : impl->face.points())
+      for (int k = 0; k < 4; ++k) {
+        const Rational along = (p - *impl->centre) * axes[k];
+        if (!extent[k] || along > *extent[k]) extent[k] = along;
+      }
+    for (int k = 0; k < 4; ++k)
+      meets[k] = extent[k] && !CGAL::is_negative(*extent[k]) && extent[(k + 1) % 4] &&
+                 !CGAL::is_negative(*extent[(k + 1) % 4]);
   }
   Sweep sweep(*impl, face, a, b, occluders);
-  for (Sector& sector : impl->sectors) sweep.run(sector);
+  for (std::size_t k = 0; k < impl->sectors.size(); ++k)
+    if (meets[k]) sweep.run(impl->sectors[k]);
   if (impl->centre && impl->face.contains(*impl->centre)) {
     for (const Sector& sector : impl->sectors)
       for (const Column& column : sector.columns)

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
+#include <mutex>
 #include <numeric>
 
 #include "back_pieces.h"
@@ -280,6 +282,13 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   const auto whole = per_candidate<SourceOcclusion>(
       scene, candidates, options.parallel,
       [&](const ConvexPolyhedron& solid) { return source_occlusion(solid, q1, q2); });
+  // The occluders of joint umbrae, prepared once each for all the faces they shadow.
+  std::vector<std::shared_ptr<const UmbraSolid>> prepared;
+  std::unique_ptr<std::once_flag[]> preparing;
+  if (options.joint_umbrae) {
+    prepared.resize(scene.objects.size());
+    preparing = std::make_unique<std::once_flag[]>(scene.objects.size());
+  }
   LightShadows result = shading.shade(
       candidates, [&](const Receiver& receiver, const std::vector<std::size_t>& occluders_of) {
         std::vector<Occluder> occluders;
@@ -290,8 +299,12 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
           FaceShadow shadow = linear_face_shadow(face, q1, q2, std::move(occluders));
           if (options.joint_umbrae && shadow.joint_occlusion) {
             std::vector<UmbraOccluder> solids;
-            for (const OccluderShadow& o : shadow.occluders)
-              solids.push_back({&scene.objects[o.occluder].solid, o.polygon, o.umbra});
+            for (const OccluderShadow& o : shadow.occluders) {
+              const ConvexPolyhedron& solid = scene.objects[o.occluder].solid;
+              std::call_once(preparing[o.occluder],
+                             [&] { prepared[o.occluder] = prepare_umbra_solid(solid, q1, q2); });
+              solids.push_back({&solid, o.polygon, o.umbra, prepared[o.occluder]});
+            }
             auto curved = std::make_shared<const ExactUmbra>(exact_umbra(face, q1, q2, solids));
             // The flag now says that the umbra has joint parts; without them the straight
             // sets are the exact ones (DESIGN.md, "Shadow loops output").

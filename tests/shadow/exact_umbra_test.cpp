@@ -482,6 +482,19 @@ BOOST_AUTO_TEST_CASE(groups_whose_shadows_are_apart_are_swept_apart) {
   }
   const double expected = near_umbra.area() + far_umbra.area();
   BOOST_TEST(std::abs(umbra.area() - expected) <= 1e-12 * expected);
+  // Occluders prepared for this source (as shadows --joint-umbrae prepares them once for all
+  // faces) give the same sets; prepared for another source they are not used.
+  const FaceShadow shadow = linear_face_shadow(face, q1, q2, occluders);
+  for (const Point3& other_end : {q2, Point3(1, 1, 4)}) {
+    std::vector<UmbraOccluder> prepared;
+    for (const OccluderShadow& o : shadow.occluders)
+      prepared.push_back({&solids[o.occluder], o.polygon, o.umbra,
+                          prepare_umbra_solid(solids[o.occluder], q1, other_end)});
+    const ExactUmbra again = penumbra::exact_umbra(face, q1, q2, prepared);
+    BOOST_TEST(written(again.exact_umbra_polygons()) == written(umbra.exact_umbra_polygons()));
+    BOOST_TEST(written(again.exact_penumbra_polygons()) ==
+               written(umbra.exact_penumbra_polygons()));
+  }
 }
 
 BOOST_AUTO_TEST_CASE(an_l_shaped_occluder_in_two_pieces_and_a_row_of_slats) {

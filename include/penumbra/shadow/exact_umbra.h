@@ -25,12 +25,21 @@
 
 namespace penumbra {
 
+// An occluder prepared once for a source, for every face it shadows (exact_umbra.cpp).
+struct UmbraSolid;
+
+// prepares solid for the source q1q2 (the end points in the order exact_umbra gets them).
+std::shared_ptr<const UmbraSolid> prepare_umbra_solid(const ConvexPolyhedron& solid,
+                                                      const Point3& q1, const Point3& q2);
+
 // One convex occluder of the face: the solid and its whole shadow (penumbra and umbra) on
 // the face, a convex ring in the face's frame (OccluderShadow::polygon).
 struct UmbraOccluder {
   const ConvexPolyhedron* solid;
   Ring2 shadow;
   std::optional<Ring2> umbra;  // its single umbra (OccluderShadow::umbra), convex
+  // optional: the solid prepared for the source (used when the face's plane does not cut it)
+  std::shared_ptr<const UmbraSolid> prepared{};
 };
 
 // A piece of the umbra's boundary: part of a line or a conic of the face's frame,
