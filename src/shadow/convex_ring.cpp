@@ -92,13 +92,18 @@ std::array<Interval, 2> interval_point(const Pencil& pencil, const Interval& s, 
 FilteredAffine::FilteredAffine(const Affine2& exact)
     : exact_(exact), d_(enclosure(exact.d)), e_(enclosure(exact.e)), f_(enclosure(exact.f)) {}
 
+std::optional<CGAL::Sign> FilteredAffine::maybe_sign(const std::array<Interval, 2>& at) const {
+  const Interval value = d_ * at[0] + e_ * at[1] + f_;
+  if (value.inf() > 0) return CGAL::POSITIVE;
+  if (value.sup() < 0) return CGAL::NEGATIVE;
+  if (value.inf() == 0 && value.sup() == 0) return CGAL::ZERO;
+  return std::nullopt;
+}
+
 CGAL::Sign FilteredAffine::sign(const Probe& p) const {
   {
     CGAL::Protect_FPU_rounding<true> upward;
-    const Interval value = d_ * p.at[0] + e_ * p.at[1] + f_;
-    if (value.inf() > 0) return CGAL::POSITIVE;
-    if (value.sup() < 0) return CGAL::NEGATIVE;
-    if (value.inf() == 0 && value.sup() == 0) return CGAL::ZERO;
+    if (const auto certain = maybe_sign(p.at)) return *certain;
   }
   return CGAL::sign(exact_(p.point));
 }

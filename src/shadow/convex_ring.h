@@ -60,6 +60,7 @@ class FaceRegion {
   // every vertex of the boundary's rings.
   const std::vector<RationalPoint2>& points() const { return points_; }
   const std::vector<std::vector<RationalPoint2>>& boundary() const { return boundary_; }
+  const std::vector<ConvexRing>& pieces() const { return pieces_; }
   bool contains(const Probe& p) const;
   bool contains(const RationalPoint2& p) const { return contains(Probe(p)); }
   // as ConvexRing::maybe_contains, for the union.
@@ -81,6 +82,9 @@ class FilteredAffine {
   const Affine2& exact() const { return exact_; }
   // the sign of the function at p.
   CGAL::Sign sign(const Probe& p) const;
+  // the sign at a point known by an enclosure only, or nullopt when the intervals cannot
+  // tell (needs upward rounding).
+  std::optional<CGAL::Sign> maybe_sign(const std::array<Interval, 2>& at) const;
 
  private:
   Affine2 exact_;

@@ -29,6 +29,7 @@
 #include "blocked_interval_filter.h"
 #include "convex_ring.h"
 #include "exact_corner.h"
+#include "joint_region.h"
 #include "pencil.h"
 #include "penumbra/base/gauss_legendre.h"
 #include "penumbra/base/parallel.h"
@@ -453,6 +454,19 @@ class Sweep {
     for (const auto& ring : impl_.face.boundary())
       for (std::size_t k = 0; k < ring.size(); ++k)
         add_line(line_through(ring[k], ring[(k + 1) % ring.size()]), nullptr, false);
+    // W needs two occluders and interior on the face (joint_region.h); without it the
+    // lines that only matter in W are left out and no point is shared.
+    if (occluders.size() >= 2) {
+      for (std::size_t o = 0; o < occluders.size(); ++o)
+        for (int end = 0; end < 2; ++end) {
+          detail::EndShadow volume;
+          for (const RationalPlane3& plane : prepared_[o]->ends[end])
+            volume.emplace_back(on_face(frame, plane));
+          end_shadows_[end].push_back(std::move(volume));
+        }
+      if (!detail::may_hide_together(impl_.face, end_shadows_, umbrae_)) end_shadows_ = {};
+    }
+    const bool in_w = !end_shadows_[0].empty();
     for (std::size_t o = 0; o < occluders.size(); ++o) {
       const ConvexRing* region = &shadows_[o];
       const auto& outer = region->points();
@@ -462,17 +476,12 @@ class Sweep {
       const auto& inner = umbra->points();
       for (std::size_t k = 0; k < inner.size(); ++k)
         add_line(line_through(inner[k], inner[(k + 1) % inner.size()]), umbra, false);
-      // The rest only matters in W, which needs two occluders.
-      if (occluders.size() < 2) continue;
+      // The rest only matters in W.
+      if (!in_w) continue;
       const UmbraSolid& prepared = *prepared_[o];
-      for (int end = 0; end < 2; ++end) {
-        std::vector<detail::FilteredAffine> volume;
-        for (const RationalPlane3& plane : prepared.ends[end]) {
-          volume.emplace_back(on_face(frame, plane));
-          add_line(volume.back().exact(), region, true);
-        }
-        end_shadows_[end].push_back(std::move(volume));
-      }
+      for (int end = 0; end < 2; ++end)
+        for (const detail::FilteredAffine& f : end_shadows_[end][o])
+          add_line(f.exact(), region, true);
       for (const RationalPlane3& plane : prepared.solid.planes)
         add_line(on_face(frame, plane), region, true);
       for (const RationalPlane3& ray : prepared.rays) rays_.push_back(on_face(frame, ray));
@@ -499,6 +508,65 @@ class Sweep {
     impl_.curves.push_back({f, q, joint});
     known_.emplace(std::move(key), id);
     return id;
+  }
+
+  // label_of at the pencil's point (s, r) from intervals alone (upward rounding), without
+  // making the point: nullopt when a sign or comparison is not certified.
+  std::optional<Label> maybe_label(const Pencil& pencil, const Rational& s, const Rational& r) {
+    CGAL::Protect_FPU_rounding<true> upward;
+    const std::array<Interval, 2> at = detail::interval_point(
+        pencil, Interval(CGAL::to_interval(s)), Interval(CGAL::to_interval(r)));
+    const auto in_face = impl_.face.maybe_contains(at);
+    if (!in_face) return std::nullopt;
+    if (!*in_face) return kLit;
+    std::vector<std::size_t> under;  // the occluders whose whole shadows hold the point
+    for (std::size_t k = 0; k < shadows_.size(); ++k) {
+      const auto in = shadows_[k].maybe_contains(at);
+      if (!in) return std::nullopt;
+      if (*in) under.push_back(k);
+    }
+    if (under.empty()) return kLit;
+    bool unsure = false;
+    for (const ConvexRing& umbra : umbrae_) {
+      const auto in = umbra.maybe_contains(at);
+      if (in && *in) return kUmbra;
+      unsure = unsure || !in;
+    }
+    if (unsure) return std::nullopt;
+    // shared(): both ends hidden, each by some occluder
+    if (under.size() < 2) return kPenumbra;
+    for (const auto& hidden : end_shadows_) {
+      bool any = false;
+      for (const detail::EndShadow& volume : hidden) {
+        if (volume.empty()) continue;
+        std::optional<bool> all = true;
+        for (const detail::FilteredAffine& f : volume) {
+          const auto sign = f.maybe_sign(at);
+          if (sign == CGAL::POSITIVE) {
+            all = false;
+            break;
+          }
+          if (!sign) all = std::nullopt;
+        }
+        if (!all) return std::nullopt;
+        any = any || *all;
+      }
+      if (!any) return kPenumbra;
+    }
+    // covered(): the blocked intervals at the world point
+    IntervalPoint x;
+    for (int i = 0; i < 3; ++i) x[i] = frame_[0][i] + at[0] * frame_[1][i] + at[1] * frame_[2][i];
+    std::vector<detail::BlockedBounds> bounds(prepared_.size());
+    for (std::size_t k : under) {
+      const auto b = detail::blocked_bounds(prepared_[k]->filter, x, q1i_, q2i_);
+      if (!b) return std::nullopt;
+      bounds[k] = *b;
+    }
+    const auto covers = detail::covers_source(bounds);
+    if (!covers) return std::nullopt;
+    if (!*covers) return kPenumbra;
+    impl_.joint = true;
+    return kUmbra;
   }
 
   // the label of a point inside a cell (off every curve of the sweep): outside the shadows,
@@ -751,9 +819,8 @@ class Sweep {
         } else {
           r = detail::simplest_between(at[cell - 1].first, at[cell].first);
         }
-        const RationalPoint2 p = pencil.point(s, r);
-        const Label label = label_of(p);
-        column.labels.push_back(label);
+        const auto certain = maybe_label(pencil, s, r);
+        column.labels.push_back(certain ? *certain : label_of(pencil.point(s, r)));
       }
       impl_.cells += column.labels.size();
       sector.columns.push_back(std::move(column));
@@ -766,6 +833,10 @@ class Sweep {
   std::vector<std::shared_ptr<const UmbraSolid>> prepared_;
   IntervalPoint q1i_ = detail::interval_point(q1_);
   IntervalPoint q2i_ = detail::interval_point(q2_);
+  // the enclosures of the face frame's origin, u and v
+  std::array<IntervalPoint, 3> frame_{penumbra::interval_point(face_.frame.origin()),
+                                      penumbra::interval_point(face_.frame.u()),
+                                      penumbra::interval_point(face_.frame.v())};
   std::vector<ConvexRing> shadows_;
   std::map<std::vector<Rational>, int> known_;             // this sector's curves (register_curve)
   std::map<std::array<std::size_t, 4>, GapConic> conics_;  // (gap_conic)
@@ -775,7 +846,7 @@ class Sweep {
   std::vector<Affine2> rays_;
   // per end of the source, per occluder: its point shadow volume's planes on the face (the
   // points hiding that end are those where every one is <= 0; none: it hides nothing).
-  std::array<std::vector<std::vector<detail::FilteredAffine>>, 2> end_shadows_;
+  std::array<std::vector<detail::EndShadow>, 2> end_shadows_;
 };
 
 // The world length of a frame displacement (the frame's axes are orthogonal).

@@ -1,0 +1,146 @@
+// Whether occluders may hide a linear source together on a face (src/shadow/joint_region.h,
+// the test that lets the joint-umbra sweep leave out the region W): hand cases derived
+// below, and random convex polygons with small integer coordinates (touching along edges
+// and at vertices is frequent) against CGAL's Polygon_set_2 (region_set.h): the union over
+// (a, b) of face ∩ PS1(a) ∩ PS2(b), minus the union of the umbrae, has positive area
+// exactly when may_hide_together says so.
+
+#include <boost/test/unit_test.hpp>
+
+#include <random>
+
+#include "half_plane.h"
+#include "joint_region.h"
+#include "region_set.h"
+
+using namespace penumbra;
+using detail::ConvexRing;
+using detail::EndShadow;
+using detail::FilteredAffine;
+
+namespace {
+
+// the functions <= 0 inside a counter-clockwise ring (one per edge, on its left).
+EndShadow inside_of(const Ring2& ring) {
+  EndShadow volume;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const RationalPoint2 a = CGAL::exact(ring[k]);
+    const RationalPoint2 b = CGAL::exact(ring[(k + 1) % ring.size()]);
+    volume.emplace_back(detail::Affine2{b.y() - a.y(), a.x() - b.x(),
+                                        (b.x() - a.x()) * a.y() - (b.y() - a.y()) * a.x()});
+  }
+  return volume;
+}
+
+ConvexRing rational_ring(const Ring2& ring) {
+  std::vector<RationalPoint2> points;
+  for (const Point2& p : ring) points.push_back(CGAL::exact(p));
+  return ConvexRing(std::move(points));
+}
+
+Ring2 rectangle(Exact x0, Exact y0, Exact x1, Exact y1) {
+  return {Point2(x0, y0), Point2(x1, y0), Point2(x1, y1), Point2(x0, y1)};
+}
+
+const Ring2 unit = rectangle(0, 0, 1, 1);
+
+// may_hide_together on the unit square with the first end hidden by the rings first[k] and
+// the second by second[k] (an empty ring: that occluder hides nothing of that end).
+bool may(const std::vector<Ring2>& first, const std::vector<Ring2>& second,
+         const std::vector<Ring2>& umbrae, const Ring2& face = unit) {
+  std::array<std::vector<EndShadow>, 2> ends;
+  for (const Ring2& r : first) ends[0].push_back(r.empty() ? EndShadow{} : inside_of(r));
+  for (const Ring2& r : second) ends[1].push_back(r.empty() ? EndShadow{} : inside_of(r));
+  std::vector<ConvexRing> rings;
+  for (const Ring2& r : umbrae) rings.push_back(rational_ring(r));
+  const ConvexRing piece = rational_ring(face);
+  return detail::may_hide_together(detail::FaceRegion(piece), ends, rings);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(joint_region)
+
+BOOST_AUTO_TEST_CASE(hand_cases) {
+  const Exact half(Exact(1) / 2);
+  const auto strip = [](Exact x0, Exact x1) { return rectangle(x0, -1, x1, 2); };
+  // a hides end 1 on x <= 0.6, b end 2 on x >= 0.4: the strip 0.4 < x < 0.6 has interior.
+  BOOST_TEST(may({strip(-1, Exact(6) / 10), {}}, {{}, strip(Exact(4) / 10, 2)}, {}));
+  // ... unless an umbra holds the strip: one umbra, or two that meet at x = 0.5.
+  BOOST_TEST(!may({strip(-1, Exact(6) / 10), {}}, {{}, strip(Exact(4) / 10, 2)},
+                  {strip(Exact(3) / 10, Exact(7) / 10)}));
+  BOOST_TEST(!may({strip(-1, Exact(6) / 10), {}}, {{}, strip(Exact(4) / 10, 2)},
+                  {strip(Exact(3) / 10, half), strip(half, Exact(7) / 10)}));
+  // two umbrae with a gap 0.5 < x < 0.55 between them leave interior points.
+  BOOST_TEST(may({strip(-1, Exact(6) / 10), {}}, {{}, strip(Exact(4) / 10, 2)},
+                 {strip(Exact(3) / 10, half), strip(Exact(55) / 100, Exact(7) / 10)}));
+  // an umbra across the strip only for y < 0.5 leaves its upper half.
+  BOOST_TEST(may({strip(-1, Exact(6) / 10), {}}, {{}, strip(Exact(4) / 10, 2)},
+                 {rectangle(0, -1, 1, half)}));
+  // point shadows that only touch along x = 0.5 share no interior point.
+  BOOST_TEST(!may({strip(-1, half), {}}, {{}, strip(half, 2)}, {}));
+  // ... nor do those that overlap outside the face (x > 1).
+  BOOST_TEST(!may({strip(-1, 3), {}}, {{}, strip(Exact(11) / 10, 2)}, {}));
+  // one occluder hiding both ends: its umbra, left out when the ring given holds it ...
+  BOOST_TEST(!may({strip(Exact(2) / 10, Exact(4) / 10)}, {strip(Exact(1) / 10, half)},
+                  {strip(Exact(2) / 10, Exact(4) / 10)}));
+  // ... and kept when the ring given is smaller (a source clipped after the umbrae).
+  BOOST_TEST(may({strip(Exact(2) / 10, Exact(4) / 10)}, {strip(Exact(1) / 10, half)},
+                 {strip(Exact(25) / 100, Exact(4) / 10)}));
+  // an occluder that hides nothing of an end takes no part.
+  BOOST_TEST(!may({{}, {}}, {strip(-1, 2), strip(-1, 2)}, {}));
+}
+
+BOOST_AUTO_TEST_CASE(agrees_with_polygon_set_2) {
+  std::mt19937 random(17);  // fixed seed
+  std::uniform_int_distribution<int> coordinate(0, 12);
+  const Ring2 window = rectangle(0, 0, 12, 12);
+  // a convex polygon of the window cut by one to three lines through grid points, or none.
+  const auto polygon = [&]() -> Ring2 {
+    Ring2 ring = window;
+    for (int cut = 0; cut < 1 + coordinate(random) % 3 && ring.size() >= 3; ++cut) {
+      const Point2 p(coordinate(random), coordinate(random)),
+          q(coordinate(random), coordinate(random));
+      if (p == q) continue;
+      const Exact a = q.y() - p.y(), b = p.x() - q.x();
+      ring = detail::clip(ring, {a, b, -(a * p.x() + b * p.y())});
+    }
+    const auto with_area = detail::ring_with_area(ring);
+    return with_area ? *with_area : Ring2{};
+  };
+  const Ring2 face = {Point2(1, 0), Point2(12, 2), Point2(10, 12), Point2(0, 9)};
+  int yes = 0, no = 0, covered = 0;
+  for (int iteration = 0; iteration < 1000; ++iteration) {
+    const std::size_t n = 2 + iteration % 3;
+    std::vector<Ring2> first, second, umbrae;
+    for (std::size_t k = 0; k < n; ++k) {
+      first.push_back(polygon());
+      second.push_back(polygon());
+      umbrae.push_back(iteration % 2 ? polygon() : Ring2{});
+    }
+    // the oracle: the pairs' intersections with the face, united, minus the umbrae
+    std::vector<Ring2> pairs, holes;
+    for (const Ring2& a : first)
+      for (const Ring2& b : second) {
+        if (a.empty() || b.empty()) continue;
+        Ring2 ring = detail::clip_to_convex(detail::clip_to_convex(face, a), b);
+        if (const auto with_area = detail::ring_with_area(ring)) pairs.push_back(*with_area);
+      }
+    for (const Ring2& u : umbrae)
+      if (!u.empty()) holes.push_back(u);
+    const Region2 w = detail::unite_minus(pairs, holes);
+    const bool expected = !w.empty() && CGAL::is_positive(w.area);
+    const bool got = may(first, second, umbrae, face);
+    BOOST_TEST(got == expected, "iteration " << iteration);
+    (expected ? yes : no) += 1;
+    if (!expected && !pairs.empty()) ++covered;
+  }
+  BOOST_TEST_MESSAGE("may " << yes << ", may not " << no << " (" << covered
+                            << " covered by umbrae)");
+  // both answers occur, and umbrae cover overlapping pairs often enough to be tested
+  BOOST_TEST(yes >= 100);
+  BOOST_TEST(no >= 100);
+  BOOST_TEST(covered >= 50);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
