@@ -32,27 +32,18 @@ Polygon with_interior(Polygon polygon) {
 }
 
 // clips the polygon to the closed half-plane f <= 0 (Sutherland-Hodgman, exact; the signs
-// at the vertices certified by intervals when they can).
-Polygon clip_below(const Polygon& polygon, const Affine2& f) {
-  CGAL::Protect_FPU_rounding<true> upward;
-  const Interval d(CGAL::to_interval(f.d)), e(CGAL::to_interval(f.e)), c(CGAL::to_interval(f.f));
+// at the vertices certified by f's interval filter when it can).
+Polygon clip_below(const Polygon& polygon, const FilteredAffine& f) {
   const std::size_t n = polygon.size();
   std::vector<CGAL::Sign> signs(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const RationalPoint2& p = polygon[k];
-    const Interval value =
-        d * Interval(CGAL::to_interval(p.x())) + e * Interval(CGAL::to_interval(p.y())) + c;
-    signs[k] = value.inf() > 0   ? CGAL::POSITIVE
-               : value.sup() < 0 ? CGAL::NEGATIVE
-                                 : CGAL::sign(f(p));
-  }
+  for (std::size_t k = 0; k < n; ++k) signs[k] = f.sign(Probe(polygon[k]));
   Polygon result;
   for (std::size_t k = 0; k < n; ++k) {
     const RationalPoint2& p = polygon[k];
     const RationalPoint2& q = polygon[(k + 1) % n];
     if (signs[k] != CGAL::POSITIVE) result.push_back(p);
     if (signs[k] * signs[(k + 1) % n] < 0) {  // the edge crosses the line
-      const Rational fp = f(p), fq = f(q);
+      const Rational fp = f.exact()(p), fq = f.exact()(q);
       result.push_back(p + (fp / (fp - fq)) * (q - p));
     }
   }
@@ -62,7 +53,7 @@ Polygon clip_below(const Polygon& polygon, const Affine2& f) {
 // the polygon clipped to every function's closed half-plane; empty when it has no interior.
 Polygon clip_to(Polygon polygon, const EndShadow& volume) {
   for (const FilteredAffine& f : volume) {
-    polygon = clip_below(polygon, f.exact());
+    polygon = clip_below(polygon, f);
     if (polygon.size() < 3) return {};
   }
   return with_interior(std::move(polygon));
@@ -111,8 +102,8 @@ bool sticks_out(const Polygon& polygon, const std::vector<ConvexRing>& rings,
     const auto& points = ring.points();
     for (std::size_t e = 0; e < points.size() && !inside.empty(); ++e) {
       const Affine2 f = left_of(points[e], points[(e + 1) % points.size()]);
-      const Polygon outside = with_interior(clip_below(inside, {-f.d, -f.e, -f.f}));
-      inside = with_interior(clip_below(inside, f));
+      const Polygon outside = with_interior(clip_below(inside, FilteredAffine({-f.d, -f.e, -f.f})));
+      inside = with_interior(clip_below(inside, FilteredAffine(f)));
       if (outside.empty()) continue;
       if (inside.empty() && !split) break;  // the ring misses the interior: go on whole
       split = true;
