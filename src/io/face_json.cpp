@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/geometry/exact_sum.h"
 #include "penumbra/io/shadow_json.h"
 
 namespace penumbra::io {
@@ -15,6 +16,8 @@ double rounded(const Exact& x) {
   // models are doubles): no exact evaluation needed.
   const auto& approx = x.approx();
   if (approx.is_point()) return approx.inf() + 0.0;
+  // A sum of many areas: its enclosure usually decides the rounding (exact_sum.h).
+  if (const std::optional<double> value = truncated_to_double(x)) return *value + 0.0;
   return rounded(x.exact());
 }
 

@@ -4,6 +4,7 @@
 
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
+#include "penumbra/geometry/exact_sum.h"
 
 namespace penumbra {
 namespace {
@@ -62,25 +63,26 @@ Ring2 canonical_ring(const Ring2& ring) {
 Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> area) {
   Region2 region;
   // In rationals (no chain of lazy sums), each polygon on its own thread: a ground under a
-  // city is one region of 10^4 polygons.
-  std::vector<Rational> twice(area ? 0 : polygons.size());
+  // city is one region of 10^4 polygons, whose areas are added when the exact total is
+  // needed (exact_sum; adding them here one by one cost a gcd of the growing total each).
+  std::vector<Rational> areas(area ? 0 : polygons.size());
   for_each_index(
       polygons.size(), polygons.size() > 64,
       [&](std::size_t k) {
         Polygon2& polygon = polygons[k];
         std::sort(polygon.holes.begin(), polygon.holes.end(), ring_less);
         if (area) return;
-        twice[k] = twice_signed_area(polygon.outer);
-        for (const Ring2& hole : polygon.holes) twice[k] += twice_signed_area(hole);
+        Rational twice = twice_signed_area(polygon.outer);
+        for (const Ring2& hole : polygon.holes) twice += twice_signed_area(hole);
+        areas[k] = twice / 2;
       },
       16);
-  if (area) {
+  if (area)
     region.area = std::move(*area);
-  } else {
-    Rational twice_area = 0;
-    for (const Rational& value : twice) twice_area += value;
-    region.area = exact_number(twice_area / 2);
-  }
+  else if (areas.size() == 1)
+    region.area = exact_number(std::move(areas.front()));
+  else if (!areas.empty())
+    region.area = exact_sum(std::move(areas));
   std::sort(polygons.begin(), polygons.end(),
             [](const Polygon2& a, const Polygon2& b) { return ring_less(a.outer, b.outer); });
   region.polygons = std::move(polygons);

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "penumbra/base/parallel.h"
+#include "penumbra/geometry/exact_sum.h"
 
 namespace penumbra::studies {
 namespace {
@@ -68,10 +69,10 @@ std::size_t SunHoursResult::longest_count() const {
 }
 
 Exact SunHoursResult::area_at_least(std::size_t r, sun::Duration threshold) const {
-  Exact sum = 0;
+  std::vector<Exact> areas;
   for (const Coverage& part : hours[r].parts)
-    if (step * static_cast<long long>(part.count) >= threshold) sum += part.region.area;
-  return sum;
+    if (step * static_cast<long long>(part.count) >= threshold) areas.push_back(part.region.area);
+  return exact_sum(areas);
 }
 
 SunHoursResult sun_hours(const Scene& scene, const SunPlacement& sun,
@@ -165,11 +166,11 @@ std::vector<RegionShare> plan_region_shares(const Scene& scene, const SunHoursRe
     const Region2 prism = canonical_region({Polygon2{canonical_ring(ring), {}}});
     const Region2 inside = intersection(canonical_region({window_of(face)}), prism);
     if (inside.empty()) continue;
-    RegionShare share{r, inside.area, 0};
+    std::vector<Exact> reached;
     for (const Coverage& part : result.hours[r].parts)
       if (result.step * static_cast<long long>(part.count) >= threshold)
-        share.reached += intersection(part.region, prism).area;
-    shares.push_back(std::move(share));
+        reached.push_back(intersection(part.region, prism).area);
+    shares.push_back({r, inside.area, exact_sum(reached)});
   }
   return shares;
 }

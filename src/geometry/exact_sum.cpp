@@ -1,0 +1,120 @@
+#include "penumbra/geometry/exact_sum.h"
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace penumbra {
+namespace {
+
+// The enclosure's unit: terms are rounded to multiples of 2^-kFractionBits.
+constexpr unsigned kFractionBits = 128;
+
+// lower <= 2^kFractionBits * sum <= upper.
+struct Enclosure {
+  mpz_class lower = 0, upper = 0;
+
+  void add(const Rational& x) {
+    mpz_class shifted = x.get_num();
+    mpz_mul_2exp(shifted.get_mpz_t(), shifted.get_mpz_t(), kFractionBits);
+    mpz_class q;
+    mpz_fdiv_q(q.get_mpz_t(), shifted.get_mpz_t(), x.get_den_mpz_t());
+    lower += q;
+    mpz_cdiv_q(q.get_mpz_t(), shifted.get_mpz_t(), x.get_den_mpz_t());
+    upper += q;
+  }
+  void add(const Enclosure& other) {
+    lower += other.lower;
+    upper += other.upper;
+  }
+};
+
+// returns bound / 2^kFractionBits rounded toward zero: mpz_get_d truncates, and scaling by a
+// power of two is exact (a nonzero bound is at least 2^-kFractionBits, far from underflow).
+double truncated(const mpz_class& bound) {
+  return std::ldexp(bound.get_d(), -static_cast<int>(kFractionBits));
+}
+
+CGAL::Interval_nt<false> interval_of(const Enclosure& e) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double low = truncated(e.lower), high = truncated(e.upper);
+  // Toward zero is downward for a non-negative bound and upward for a negative one.
+  return {sgn(e.lower) >= 0 ? low : std::nextafter(low, -inf),
+          sgn(e.upper) <= 0 ? high : std::nextafter(high, inf)};
+}
+
+// returns the sum of values added pairwise, so that each addition meets numbers of like size.
+Rational tree_sum(std::vector<Rational> values) {
+  if (values.empty()) return 0;
+  for (std::size_t width = 1; width < values.size(); width *= 2)
+    for (std::size_t k = 0; k + width < values.size(); k += 2 * width)
+      values[k] += values[k + width];
+  return std::move(values.front());
+}
+
+class SumRep final : public CGAL::Lazy_exact_nt_rep<Rational> {
+ public:
+  SumRep(Enclosure enclosure, std::vector<Rational> leaves, std::vector<Exact> others)
+      : CGAL::Lazy_exact_nt_rep<Rational>(interval_of(enclosure)),
+        enclosure_(std::move(enclosure)),
+        leaves_(std::move(leaves)),
+        others_(std::move(others)) {}
+
+  const Enclosure& enclosure() const { return enclosure_; }
+
+  void update_exact() const override {
+    std::vector<Rational> values = std::move(leaves_);
+    for (const Exact& other : others_) values.push_back(CGAL::exact(other));
+    auto* exact = new Indirect(tree_sum(std::move(values)));
+    this->set_at(exact);
+    this->set_ptr(exact);
+    leaves_.clear();
+    others_.clear();
+  }
+
+ private:
+  const Enclosure enclosure_;
+  mutable std::vector<Rational> leaves_;
+  mutable std::vector<Exact> others_;
+};
+
+// returns x's representation when x is a sum made here. (CGAL keeps a lazy number's
+// representation private; Handle hands out its address for Compact_container.)
+const SumRep* sum_rep(const Exact& x) {
+  return dynamic_cast<const SumRep*>(static_cast<const CGAL::Rep*>(x.for_compact_container()));
+}
+
+}  // namespace
+
+Exact exact_sum(std::vector<Rational> terms) {
+  Enclosure enclosure;
+  for (const Rational& term : terms) enclosure.add(term);
+  return Exact(new SumRep(std::move(enclosure), std::move(terms), {}));
+}
+
+Exact exact_sum(const std::vector<Exact>& terms) {
+  Enclosure enclosure;
+  std::vector<Rational> leaves;
+  std::vector<Exact> sums;
+  for (const Exact& term : terms) {
+    if (const SumRep* rep = sum_rep(term)) {
+      enclosure.add(rep->enclosure());
+      sums.push_back(term);
+    } else {
+      leaves.push_back(CGAL::exact(term));
+      enclosure.add(leaves.back());
+    }
+  }
+  return Exact(new SumRep(std::move(enclosure), std::move(leaves), std::move(sums)));
+}
+
+std::optional<double> truncated_to_double(const Exact& x) {
+  const SumRep* rep = sum_rep(x);
+  if (!rep) return std::nullopt;
+  // Rounding toward zero is monotone: the ends agreeing decide every value between them.
+  const double low = truncated(rep->enclosure().lower);
+  if (low != truncated(rep->enclosure().upper)) return std::nullopt;
+  return low;
+}
+
+}  // namespace penumbra
