@@ -5,34 +5,22 @@
 #include <utility>
 
 namespace penumbra {
+
+Enclosure Enclosure::of(const Rational& x) {
+  mpz_class shifted = x.get_num();
+  mpz_mul_2exp(shifted.get_mpz_t(), shifted.get_mpz_t(), kEnclosureBits);
+  Enclosure e;
+  mpz_fdiv_q(e.lower.get_mpz_t(), shifted.get_mpz_t(), x.get_den_mpz_t());
+  mpz_cdiv_q(e.upper.get_mpz_t(), shifted.get_mpz_t(), x.get_den_mpz_t());
+  return e;
+}
+
 namespace {
 
-// The enclosure's unit: terms are rounded to multiples of 2^-kFractionBits.
-constexpr unsigned kFractionBits = 128;
-
-// lower <= 2^kFractionBits * sum <= upper.
-struct Enclosure {
-  mpz_class lower = 0, upper = 0;
-
-  void add(const Rational& x) {
-    mpz_class shifted = x.get_num();
-    mpz_mul_2exp(shifted.get_mpz_t(), shifted.get_mpz_t(), kFractionBits);
-    mpz_class q;
-    mpz_fdiv_q(q.get_mpz_t(), shifted.get_mpz_t(), x.get_den_mpz_t());
-    lower += q;
-    mpz_cdiv_q(q.get_mpz_t(), shifted.get_mpz_t(), x.get_den_mpz_t());
-    upper += q;
-  }
-  void add(const Enclosure& other) {
-    lower += other.lower;
-    upper += other.upper;
-  }
-};
-
-// returns bound / 2^kFractionBits rounded toward zero: mpz_get_d truncates, and scaling by a
-// power of two is exact (a nonzero bound is at least 2^-kFractionBits, far from underflow).
+// returns bound / 2^kEnclosureBits rounded toward zero: mpz_get_d truncates, and scaling by a
+// power of two is exact (a nonzero bound is at least 2^-kEnclosureBits, far from underflow).
 double truncated(const mpz_class& bound) {
-  return std::ldexp(bound.get_d(), -static_cast<int>(kFractionBits));
+  return std::ldexp(bound.get_d(), -static_cast<int>(kEnclosureBits));
 }
 
 CGAL::Interval_nt<false> interval_of(const Enclosure& e) {
@@ -43,39 +31,35 @@ CGAL::Interval_nt<false> interval_of(const Enclosure& e) {
           sgn(e.upper) <= 0 ? high : std::nextafter(high, inf)};
 }
 
-// returns the sum of values added pairwise, so that each addition meets numbers of like size.
-Rational tree_sum(std::vector<Rational> values) {
-  if (values.empty()) return 0;
-  for (std::size_t width = 1; width < values.size(); width *= 2)
-    for (std::size_t k = 0; k + width < values.size(); k += 2 * width)
-      values[k] += values[k + width];
-  return std::move(values.front());
-}
-
 class SumRep final : public CGAL::Lazy_exact_nt_rep<Rational> {
  public:
-  SumRep(Enclosure enclosure, std::vector<Rational> leaves, std::vector<Exact> others)
+  SumRep(Enclosure enclosure, std::vector<Rational> leaves, std::vector<Exact> others,
+         std::function<Rational()> deferred = {})
       : CGAL::Lazy_exact_nt_rep<Rational>(interval_of(enclosure)),
         enclosure_(std::move(enclosure)),
         leaves_(std::move(leaves)),
-        others_(std::move(others)) {}
+        others_(std::move(others)),
+        deferred_(std::move(deferred)) {}
 
   const Enclosure& enclosure() const { return enclosure_; }
 
   void update_exact() const override {
     std::vector<Rational> values = std::move(leaves_);
     for (const Exact& other : others_) values.push_back(CGAL::exact(other));
-    auto* exact = new Indirect(tree_sum(std::move(values)));
+    if (deferred_) values.push_back(deferred_());
+    auto* exact = new Indirect(pairwise_sum(std::move(values)));
     this->set_at(exact);
     this->set_ptr(exact);
     leaves_.clear();
     others_.clear();
+    deferred_ = nullptr;
   }
 
  private:
   const Enclosure enclosure_;
   mutable std::vector<Rational> leaves_;
   mutable std::vector<Exact> others_;
+  mutable std::function<Rational()> deferred_;
 };
 
 // returns x's representation when x is a sum made here. (CGAL keeps a lazy number's
@@ -86,9 +70,17 @@ const SumRep* sum_rep(const Exact& x) {
 
 }  // namespace
 
+Rational pairwise_sum(std::vector<Rational> values) {
+  if (values.empty()) return 0;
+  for (std::size_t width = 1; width < values.size(); width *= 2)
+    for (std::size_t k = 0; k + width < values.size(); k += 2 * width)
+      values[k] += values[k + width];
+  return std::move(values.front());
+}
+
 Exact exact_sum(std::vector<Rational> terms) {
   Enclosure enclosure;
-  for (const Rational& term : terms) enclosure.add(term);
+  for (const Rational& term : terms) enclosure.add(Enclosure::of(term));
   return Exact(new SumRep(std::move(enclosure), std::move(terms), {}));
 }
 
@@ -102,10 +94,21 @@ Exact exact_sum(const std::vector<Exact>& terms) {
       sums.push_back(term);
     } else {
       leaves.push_back(CGAL::exact(term));
-      enclosure.add(leaves.back());
+      enclosure.add(Enclosure::of(leaves.back()));
     }
   }
   return Exact(new SumRep(std::move(enclosure), std::move(leaves), std::move(sums)));
+}
+
+Exact exact_sum(const std::vector<Enclosure>& terms, std::function<Rational()> exact) {
+  Enclosure enclosure;
+  for (const Enclosure& term : terms) enclosure.add(term);
+  return Exact(new SumRep(std::move(enclosure), {}, {}, std::move(exact)));
+}
+
+std::optional<Enclosure> enclosure_of(const Exact& x) {
+  if (const SumRep* rep = sum_rep(x)) return rep->enclosure();
+  return std::nullopt;
 }
 
 std::optional<double> truncated_to_double(const Exact& x) {

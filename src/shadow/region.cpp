@@ -29,6 +29,75 @@ Rational twice_signed_area(const Ring2& ring) {
   return twice;
 }
 
+// x 2^kEnclosureBits rounded down, and whether that was exact.
+struct Scaled {
+  mpz_class floor;
+  bool exact;
+};
+
+Scaled scaled(const Rational& x) {
+  Scaled s{x.get_num(), false};
+  mpz_mul_2exp(s.floor.get_mpz_t(), s.floor.get_mpz_t(), kEnclosureBits);
+  mpz_class remainder;
+  mpz_fdiv_qr(s.floor.get_mpz_t(), remainder.get_mpz_t(), s.floor.get_mpz_t(), x.get_den_mpz_t());
+  s.exact = remainder == 0;
+  return s;
+}
+
+// adds to sum and bound what encloses 2^(2 kEnclosureBits) times twice the signed area of
+// ring, in integers: |2^(2k) twice - sum| <= bound. With each coordinate written
+// x = (X + a) 2^-k, X = floor(x 2^k), 0 <= a < 1, a shoelace term x_i y_j - x_j y_i is 2^-2k
+// times X_i Y_j - X_j Y_i plus X_i b_j + a_i Y_j + a_i b_j - X_j b_i - a_j Y_i - a_j b_i, whose
+// size is below |X_i| + |Y_j| + 1 + |X_j| + |Y_i| + 1, less what a zero a or b leaves out
+// (coordinates on the grid, such as doubles, add nothing).
+void add_twice_area(const Ring2& ring, mpz_class& sum, mpz_class& bound) {
+  std::vector<Scaled> x, y;
+  for (const Point2& p : ring) {
+    const RationalPoint2& exact = CGAL::exact(p);
+    x.push_back(scaled(exact.x()));
+    y.push_back(scaled(exact.y()));
+  }
+  // bounds |X_i b_j + a_i Y_j + a_i b_j|.
+  const auto error = [](const Scaled& xi, const Scaled& yj) {
+    mpz_class e = 0;
+    if (!yj.exact) e += abs(xi.floor);
+    if (!xi.exact) e += abs(yj.floor);
+    if (!xi.exact && !yj.exact) e += 1;
+    return e;
+  };
+  const std::size_t n = ring.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    sum += x[i].floor * y[j].floor - x[j].floor * y[i].floor;
+    bound += error(x[i], y[j]) + error(x[j], y[i]);
+  }
+}
+
+// returns an enclosure of the area of polygon (outer ring and holes).
+Enclosure area_enclosure(const Polygon2& polygon) {
+  mpz_class sum = 0, bound = 0;
+  add_twice_area(polygon.outer, sum, bound);
+  for (const Ring2& hole : polygon.holes) add_twice_area(hole, sum, bound);
+  // area 2^k = (twice 2^2k) / 2^(k + 1).
+  Enclosure area;
+  mpz_class end = sum - bound;
+  mpz_fdiv_q_2exp(area.lower.get_mpz_t(), end.get_mpz_t(), kEnclosureBits + 1);
+  end = sum + bound;
+  mpz_cdiv_q_2exp(area.upper.get_mpz_t(), end.get_mpz_t(), kEnclosureBits + 1);
+  return area;
+}
+
+// returns the exact area of polygons.
+Rational exact_area(const std::vector<Polygon2>& polygons) {
+  std::vector<Rational> areas;
+  for (const Polygon2& polygon : polygons) {
+    Rational twice = twice_signed_area(polygon.outer);
+    for (const Ring2& hole : polygon.holes) twice += twice_signed_area(hole);
+    areas.push_back(twice / 2);
+  }
+  return pairwise_sum(std::move(areas));
+}
+
 }  // namespace
 
 Exact signed_area(const Ring2& ring) {
@@ -62,29 +131,29 @@ Ring2 canonical_ring(const Ring2& ring) {
 
 Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> area) {
   Region2 region;
-  // In rationals (no chain of lazy sums), each polygon on its own thread: a ground under a
-  // city is one region of 10^4 polygons, whose areas are added when the exact total is
-  // needed (exact_sum; adding them here one by one cost a gcd of the growing total each).
-  std::vector<Rational> areas(area ? 0 : polygons.size());
   for_each_index(
       polygons.size(), polygons.size() > 64,
       [&](std::size_t k) {
-        Polygon2& polygon = polygons[k];
-        std::sort(polygon.holes.begin(), polygon.holes.end(), ring_less);
-        if (area) return;
-        Rational twice = twice_signed_area(polygon.outer);
-        for (const Ring2& hole : polygon.holes) twice += twice_signed_area(hole);
-        areas[k] = twice / 2;
+        std::sort(polygons[k].holes.begin(), polygons[k].holes.end(), ring_less);
       },
       16);
-  if (area)
-    region.area = std::move(*area);
-  else if (areas.size() == 1)
-    region.area = exact_number(std::move(areas.front()));
-  else if (!areas.empty())
-    region.area = exact_sum(std::move(areas));
   std::sort(polygons.begin(), polygons.end(),
             [](const Polygon2& a, const Polygon2& b) { return ring_less(a.outer, b.outer); });
+  if (area) {
+    region.area = std::move(*area);
+  } else if (polygons.size() == 1) {
+    region.area = exact_number(exact_area(polygons));
+  } else if (!polygons.empty()) {
+    // A ground under a city is one region of 10^4 polygons. Their exact areas, rationals of
+    // unrelated denominators, are computed and added when the total's exact value is asked
+    // for (exact_sum.h); until then integer enclosures of them (each polygon on its own
+    // thread) give the interval and the printed double.
+    std::vector<Enclosure> areas(polygons.size());
+    for_each_index(
+        polygons.size(), polygons.size() > 64,
+        [&](std::size_t k) { areas[k] = area_enclosure(polygons[k]); }, 16);
+    region.area = exact_sum(areas, [polygons] { return exact_area(polygons); });
+  }
   region.polygons = std::move(polygons);
   return region;
 }

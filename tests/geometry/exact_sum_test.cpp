@@ -31,6 +31,11 @@ Rational one_by_one(const std::vector<Rational>& terms) {
 // checks sum against expected: its exact value, its interval, and the double it rounds to
 // (toward zero, as mpq_get_d does) when the enclosure decides it. returns whether it did.
 bool check_sum(const Exact& sum, const Rational& expected) {
+  const std::optional<Enclosure> enclosure = enclosure_of(sum);
+  BOOST_TEST_REQUIRE(enclosure.has_value());
+  const Rational scaled = expected * Rational(mpz_class(1) << kEnclosureBits);
+  BOOST_TEST(Rational(enclosure->lower) <= scaled);
+  BOOST_TEST(scaled <= Rational(enclosure->upper));
   const std::optional<double> decided = truncated_to_double(sum);
   const CGAL::Interval_nt<false> interval = sum.approx();  // before the exact value refines it
   BOOST_TEST(Rational(interval.inf()) <= expected);

@@ -12,6 +12,7 @@
 // enclosure round to the same double, so does every number between them. The exact value,
 // when something needs it, is the terms added pairwise (a balanced tree), computed once.
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -19,12 +20,38 @@
 
 namespace penumbra {
 
+// The enclosures' unit is 2^-kEnclosureBits.
+constexpr unsigned kEnclosureBits = 128;
+
+// An enclosure of a number x: lower <= x 2^kEnclosureBits <= upper.
+struct Enclosure {
+  mpz_class lower = 0, upper = 0;
+
+  // returns the enclosure of x: x 2^kEnclosureBits rounded down and up.
+  static Enclosure of(const Rational& x);
+
+  void add(const Enclosure& other) {
+    lower += other.lower;
+    upper += other.upper;
+  }
+};
+
 // returns the sum of terms as an Epeck number whose exact value is computed on first use.
 Exact exact_sum(std::vector<Rational> terms);
 
 // returns the sum of terms (exact_sum results or any other Epeck numbers) in the same way;
 // the enclosures of exact_sum terms are added, the exact values of the others are taken.
 Exact exact_sum(const std::vector<Exact>& terms);
+
+// returns the sum of numbers enclosed by terms, whose exact value exact() computes when first
+// asked for (the polygons' areas of a region, from their rings).
+Exact exact_sum(const std::vector<Enclosure>& terms, std::function<Rational()> exact);
+
+// returns the exact sum of values, added pairwise (each addition meets numbers of like size).
+Rational pairwise_sum(std::vector<Rational> values);
+
+// returns the enclosure of x when x is an exact_sum, else nothing.
+std::optional<Enclosure> enclosure_of(const Exact& x);
 
 // returns x's exact value rounded toward zero to a double (what CGAL::to_double does with the
 // rational), without computing it when x is an exact_sum whose enclosure decides it;

@@ -1,0 +1,115 @@
+// The area of a region of many polygons (canonical_region): an exact sum made lazily from
+// integer enclosures of the polygons' areas (exact_sum.h). Checked against the shoelace
+// formula evaluated here in rationals, polygon by polygon, on random polygons with rational
+// corners of unrelated denominators (fixed seed).
+
+#include <boost/test/unit_test.hpp>
+
+#include <random>
+
+#include "penumbra/geometry/exact_sum.h"
+#include "penumbra/shadow/region.h"
+
+using namespace penumbra;
+
+namespace {
+
+// returns a random rational in [-range, range] with a denominator up to 10^6.
+Rational random_coordinate(std::mt19937& random, int range) {
+  std::uniform_int_distribution<long> denominator(1, 1000000);
+  const long q = denominator(random);
+  std::uniform_int_distribution<long> numerator(-range * q, range * q);
+  Rational x(numerator(random), q);
+  x.canonicalize();
+  return x;
+}
+
+Point2 point_of(const Rational& x, const Rational& y) {
+  return from_exact<Point2>(RationalPoint2(x, y));
+}
+
+// returns a quadrilateral around (cx, cy): four corners at random distances in the four
+// quadrants, counter-clockwise (so convex or not, but simple), as rationals.
+Ring2 random_quadrilateral(std::mt19937& random, const Rational& cx, const Rational& cy) {
+  const auto offset = [&]() -> Rational {
+    return abs(random_coordinate(random, 3)) + Rational(1, 1000);
+  };
+  return {point_of(cx + offset(), cy + offset()), point_of(cx - offset(), cy + offset()),
+          point_of(cx - offset(), cy - offset()), point_of(cx + offset(), cy - offset())};
+}
+
+// the shoelace formula, term by term in rationals.
+Rational shoelace(const Ring2& ring) {
+  Rational twice = 0;
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const RationalPoint2& p = CGAL::exact(ring[k]);
+    const RationalPoint2& q = CGAL::exact(ring[(k + 1) % ring.size()]);
+    twice += p.x() * q.y() - p.y() * q.x();
+  }
+  return twice / 2;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(region_area)
+
+BOOST_AUTO_TEST_CASE(many_polygons_add_up_to_the_sum_of_their_shoelace_areas) {
+  std::mt19937 random(1985);
+  int decided = 0;
+  const int trials = 12;
+  for (int trial = 0; trial < trials; ++trial) {
+    // Up to 300 quadrilaterals, some with a hole, around centres as far as 10^4 from the
+    // origin (the enclosure's error grows with the coordinates).
+    std::vector<Polygon2> polygons;
+    Rational expected = 0;
+    const int count = 2 + trial * 25;
+    const int range = trial % 2 ? 10000 : 10;
+    for (int k = 0; k < count; ++k) {
+      const Rational cx = random_coordinate(random, range), cy = random_coordinate(random, range);
+      Polygon2 polygon{canonical_ring(random_quadrilateral(random, cx, cy)), {}};
+      expected += shoelace(polygon.outer);
+      if (k % 3 == 0) {
+        // A hole: the triangle (cx, cy) + small offsets, clockwise, inside every quadrilateral
+        // around (cx, cy) (whose corners are at least 1/1000 away on both axes).
+        const Rational e(1, 4000);
+        Ring2 hole{point_of(cx, cy), point_of(cx, cy + e), point_of(cx + e, cy)};
+        polygon.holes.push_back(canonical_ring(hole));
+        expected += shoelace(polygon.holes.back());
+      }
+      polygons.push_back(std::move(polygon));
+    }
+    const Region2 region = canonical_region(polygons);
+    // The enclosure holds the value, exactly: lower <= expected 2^128 <= upper.
+    const std::optional<Enclosure> enclosure = enclosure_of(region.area);
+    BOOST_TEST_REQUIRE(enclosure.has_value());
+    const Rational scaled = expected * Rational(mpz_class(1) << kEnclosureBits);
+    BOOST_TEST(Rational(enclosure->lower) <= scaled);
+    BOOST_TEST(scaled <= Rational(enclosure->upper));
+    const CGAL::Interval_nt<false> interval = region.area.approx();
+    BOOST_TEST(Rational(interval.inf()) <= expected);
+    BOOST_TEST(expected <= Rational(interval.sup()));
+    if (const std::optional<double> value = truncated_to_double(region.area)) {
+      ++decided;
+      BOOST_TEST(*value == expected.get_d());
+    }
+    BOOST_TEST(CGAL::exact(region.area) == expected);
+  }
+  // Each corner's enclosure is 2^-128 wide: the sums are far from a double's boundary.
+  BOOST_TEST(decided == trials);
+}
+
+BOOST_AUTO_TEST_CASE(squares_with_integer_corners_have_their_integer_area) {
+  // 1 x 1, 2 x 2, ..., 40 x 40 squares apart: the enclosure is the exact value (integer
+  // corners are on its grid), so the double is the sum of squares n (n + 1) (2n + 1) / 6.
+  std::vector<Polygon2> squares;
+  for (int n = 1; n <= 40; ++n) {
+    const int x = 100 * n;
+    squares.push_back(
+        {canonical_ring({Point2(x, 0), Point2(x + n, 0), Point2(x + n, n), Point2(x, n)}), {}});
+  }
+  const Region2 region = canonical_region(squares);
+  BOOST_TEST(truncated_to_double(region.area).value_or(0) == 40.0 * 41 * 81 / 6);
+  BOOST_TEST(CGAL::exact(region.area) == Rational(40 * 41 * 81 / 6));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
