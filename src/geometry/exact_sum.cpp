@@ -7,11 +7,11 @@
 namespace penumbra {
 
 Enclosure Enclosure::of(const Rational& x) {
-  mpz_class shifted = x.get_num();
+  mpz_class shifted = x.get_num(), remainder;
   mpz_mul_2exp(shifted.get_mpz_t(), shifted.get_mpz_t(), kEnclosureBits);
   Enclosure e;
-  mpz_fdiv_q(e.lower.get_mpz_t(), shifted.get_mpz_t(), x.get_den_mpz_t());
-  mpz_cdiv_q(e.upper.get_mpz_t(), shifted.get_mpz_t(), x.get_den_mpz_t());
+  mpz_fdiv_qr(e.lower.get_mpz_t(), remainder.get_mpz_t(), shifted.get_mpz_t(), x.get_den_mpz_t());
+  e.upper = remainder == 0 ? e.lower : e.lower + 1;
   return e;
 }
 
@@ -76,12 +76,6 @@ Rational pairwise_sum(std::vector<Rational> values) {
     for (std::size_t k = 0; k + width < values.size(); k += 2 * width)
       values[k] += values[k + width];
   return std::move(values.front());
-}
-
-Exact exact_sum(std::vector<Rational> terms) {
-  Enclosure enclosure;
-  for (const Rational& term : terms) enclosure.add(Enclosure::of(term));
-  return Exact(new SumRep(std::move(enclosure), std::move(terms), {}));
 }
 
 Exact exact_sum(const std::vector<Exact>& terms) {

@@ -29,21 +29,6 @@ Rational twice_signed_area(const Ring2& ring) {
   return twice;
 }
 
-// x 2^kEnclosureBits rounded down, and whether that was exact.
-struct Scaled {
-  mpz_class floor;
-  bool exact;
-};
-
-Scaled scaled(const Rational& x) {
-  Scaled s{x.get_num(), false};
-  mpz_mul_2exp(s.floor.get_mpz_t(), s.floor.get_mpz_t(), kEnclosureBits);
-  mpz_class remainder;
-  mpz_fdiv_qr(s.floor.get_mpz_t(), remainder.get_mpz_t(), s.floor.get_mpz_t(), x.get_den_mpz_t());
-  s.exact = remainder == 0;
-  return s;
-}
-
 // adds to sum and bound what encloses 2^(2 kEnclosureBits) times twice the signed area of
 // ring, in integers: |2^(2k) twice - sum| <= bound. With each coordinate written
 // x = (X + a) 2^-k, X = floor(x 2^k), 0 <= a < 1, a shoelace term x_i y_j - x_j y_i is 2^-2k
@@ -51,24 +36,24 @@ Scaled scaled(const Rational& x) {
 // size is below |X_i| + |Y_j| + 1 + |X_j| + |Y_i| + 1, less what a zero a or b leaves out
 // (coordinates on the grid, such as doubles, add nothing).
 void add_twice_area(const Ring2& ring, mpz_class& sum, mpz_class& bound) {
-  std::vector<Scaled> x, y;
+  std::vector<Enclosure> x, y;  // X = x.lower
   for (const Point2& p : ring) {
     const RationalPoint2& exact = CGAL::exact(p);
-    x.push_back(scaled(exact.x()));
-    y.push_back(scaled(exact.y()));
+    x.push_back(Enclosure::of(exact.x()));
+    y.push_back(Enclosure::of(exact.y()));
   }
   // bounds |X_i b_j + a_i Y_j + a_i b_j|.
-  const auto error = [](const Scaled& xi, const Scaled& yj) {
+  const auto error = [](const Enclosure& xi, const Enclosure& yj) {
     mpz_class e = 0;
-    if (!yj.exact) e += abs(xi.floor);
-    if (!xi.exact) e += abs(yj.floor);
-    if (!xi.exact && !yj.exact) e += 1;
+    if (!yj.exact()) e += abs(xi.lower);
+    if (!xi.exact()) e += abs(yj.lower);
+    if (!xi.exact() && !yj.exact()) e += 1;
     return e;
   };
   const std::size_t n = ring.size();
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = (i + 1) % n;
-    sum += x[i].floor * y[j].floor - x[j].floor * y[i].floor;
+    sum += x[i].lower * y[j].lower - x[j].lower * y[i].lower;
     bound += error(x[i], y[j]) + error(x[j], y[i]);
   }
 }

@@ -5,9 +5,9 @@
 // The exact sum of n rationals of unrelated denominators has a denominator of about n times
 // their size, and adding them one by one costs a gcd of that size at every step: the area of
 // one part of the ground of a sun-hours study (10^3 polygons, 10^5-bit denominators) took
-// seconds. An ExactSum instead keeps its terms and an enclosure of their sum computed in
-// integers, each term rounded down and up to a multiple of 2^-kFractionBits. The enclosure
-// gives the Epeck number its interval, and usually the double an output prints (the value
+// seconds. An exact_sum instead keeps what its exact value is made from and an enclosure
+// of it in integers, each term rounded down and up to a multiple of 2^-kEnclosureBits. The
+// enclosure gives the Epeck number its interval, and usually the double an output prints (the value
 // rounded toward zero, as the exact value's own conversion rounds): when both ends of the
 // enclosure round to the same double, so does every number between them. The exact value,
 // when something needs it, is the terms added pairwise (a balanced tree), computed once.
@@ -27,8 +27,10 @@ constexpr unsigned kEnclosureBits = 128;
 struct Enclosure {
   mpz_class lower = 0, upper = 0;
 
-  // returns the enclosure of x: x 2^kEnclosureBits rounded down and up.
+  // returns the enclosure of x: x 2^kEnclosureBits rounded down and up (equal when x lies on
+  // the grid, as every double of at most kEnclosureBits fraction bits does).
   static Enclosure of(const Rational& x);
+  bool exact() const { return lower == upper; }
 
   void add(const Enclosure& other) {
     lower += other.lower;
@@ -36,11 +38,9 @@ struct Enclosure {
   }
 };
 
-// returns the sum of terms as an Epeck number whose exact value is computed on first use.
-Exact exact_sum(std::vector<Rational> terms);
-
-// returns the sum of terms (exact_sum results or any other Epeck numbers) in the same way;
-// the enclosures of exact_sum terms are added, the exact values of the others are taken.
+// returns the sum of terms (exact_sum results or any other Epeck numbers) as an Epeck number
+// whose exact value is computed on first use; the enclosures of exact_sum terms are added,
+// the exact values of the others are taken.
 Exact exact_sum(const std::vector<Exact>& terms);
 
 // returns the sum of numbers enclosed by terms, whose exact value exact() computes when first
