@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include "penumbra/geometry/exact.h"
 
 namespace penumbra::detail {
 
@@ -41,7 +42,7 @@ bool direction_less(const Vector3& a, const Vector3& b) {
     } catch (const CGAL::Uncertain_conversion_exception&) {
     }
   }
-  return direction_less(CGAL::exact(a), CGAL::exact(b));
+  return direction_less(exact_value(a), exact_value(b));
 }
 
 Vector3 in_plane_direction(const Vector3& normal) {

@@ -13,6 +13,7 @@
 #include "convex_hull_2.h"
 #include "dyadic_vector.h"
 #include "penumbra/geometry/dyadic_plane.h"
+#include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/geometry_error.h"
 #include "penumbra/geometry/point_order.h"
 
@@ -153,8 +154,8 @@ ConvexPolyhedron ConvexPolyhedron::from_faces(std::vector<std::vector<Point3>> f
       for (const Point3& p : face.vertices) face.ring.push_back(face.frame.to_frame(p));
       Rational twice = 0;
       for (std::size_t k = 0; k < face.ring.size(); ++k) {
-        const RationalPoint2& a = CGAL::exact(face.ring[k]);
-        const RationalPoint2& b = CGAL::exact(face.ring[(k + 1) % face.ring.size()]);
+        const RationalPoint2& a = exact_value(face.ring[k]);
+        const RationalPoint2& b = exact_value(face.ring[(k + 1) % face.ring.size()]);
         twice += a.x() * b.y() - b.x() * a.y();
       }
       face.area = exact_number(twice / 2);

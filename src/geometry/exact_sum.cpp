@@ -4,6 +4,8 @@
 #include <limits>
 #include <utility>
 
+#include "penumbra/geometry/exact.h"
+
 namespace penumbra {
 
 Enclosure Enclosure::of(const Rational& x) {
@@ -45,7 +47,7 @@ class SumRep final : public CGAL::Lazy_exact_nt_rep<Rational> {
 
   void update_exact() const override {
     std::vector<Rational> values = std::move(leaves_);
-    for (const Exact& other : others_) values.push_back(CGAL::exact(other));
+    for (const Exact& other : others_) values.push_back(exact_value(other));
     if (deferred_) values.push_back(deferred_());
     auto* exact = new Indirect(pairwise_sum(std::move(values)));
     this->set_at(exact);
@@ -87,7 +89,7 @@ Exact exact_sum(const std::vector<Exact>& terms) {
       enclosure.add(rep->enclosure());
       sums.push_back(term);
     } else {
-      leaves.push_back(CGAL::exact(term));
+      leaves.push_back(exact_value(term));
       enclosure.add(Enclosure::of(leaves.back()));
     }
   }

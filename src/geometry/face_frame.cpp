@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "penumbra/geometry/exact.h"
+
 namespace penumbra {
 namespace {
 
@@ -29,8 +31,8 @@ FaceFrame::FaceFrame(const Point3& origin, RationalVector3 u, RationalVector3 v,
       vv_(exact_number(std::move(vv))) {}
 
 RationalPoint2 FaceFrame::to_frame(const RationalPoint3& p) const {
-  const RationalVector3 d = p - CGAL::exact(origin_);
-  return {(d * CGAL::exact(u_)) / CGAL::exact(uu_), (d * CGAL::exact(v_)) / CGAL::exact(vv_)};
+  const RationalVector3 d = p - exact_value(origin_);
+  return {(d * exact_value(u_)) / exact_value(uu_), (d * exact_value(v_)) / exact_value(vv_)};
 }
 
 RationalPoint3 FaceFrame::to_world(const RationalPoint2& q) const {
@@ -45,9 +47,9 @@ RationalPoint3 FaceFrame::to_world(const RationalPoint2& q) const {
     else
       sum += x * w;
   };
-  const RationalPoint3& o = CGAL::exact(origin_);
-  const RationalVector3& u = CGAL::exact(u_);
-  const RationalVector3& v = CGAL::exact(v_);
+  const RationalPoint3& o = exact_value(origin_);
+  const RationalVector3& u = exact_value(u_);
+  const RationalVector3& v = exact_value(v_);
   Rational world[3] = {o.x(), o.y(), o.z()};
   for (int i = 0; i < 3; ++i) {
     add(world[i], q.x(), u[i]);
@@ -57,11 +59,11 @@ RationalPoint3 FaceFrame::to_world(const RationalPoint2& q) const {
 }
 
 Point2 FaceFrame::to_frame(const Point3& p) const {
-  return from_exact<Point2>(to_frame(CGAL::exact(p)));
+  return from_exact<Point2>(to_frame(exact_value(p)));
 }
 
 Point3 FaceFrame::to_world(const Point2& q) const {
-  return from_exact<Point3>(to_world(CGAL::exact(q)));
+  return from_exact<Point3>(to_world(exact_value(q)));
 }
 
 Vec3d FaceFrame::unit_u() const {

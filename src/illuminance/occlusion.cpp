@@ -1,5 +1,6 @@
 #include "penumbra/illuminance/occlusion.h"
 
+#include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/interval.h"
 
 #include <algorithm>
@@ -99,11 +100,11 @@ std::optional<ExactInterval> hidden_interval(const HiddenRegion& region, const P
   // pyramid from the receiving point through the occluder's contour. Along the source
   // F(Q(u)) = F(a) + u (F(b) - F(a)). In the exact rationals directly (no lazy nodes).
   using Rational = Exact::ET;
-  const auto& exact_a = CGAL::exact(a);
-  const auto& exact_b = CGAL::exact(b);
+  const auto& exact_a = exact_value(a);
+  const auto& exact_b = exact_value(b);
   Rational low = 0, high = 1;
   for (const Plane3* plane : uncertain) {
-    const auto& h = CGAL::exact(*plane);
+    const auto& h = exact_value(*plane);
     const Rational at_a = plane_value(h, exact_a);
     const Rational at_b = plane_value(h, exact_b);
     const Rational slope = at_b - at_a;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/exact_sum.h"
 #include "penumbra/io/shadow_json.h"
 
@@ -18,7 +19,7 @@ double rounded(const Exact& x) {
   if (approx.is_point()) return approx.inf() + 0.0;
   // A sum of many areas: its enclosure usually decides the rounding (exact_sum.h).
   if (const std::optional<double> value = truncated_to_double(x)) return *value + 0.0;
-  return rounded(x.exact());
+  return rounded(exact_value(x));
 }
 
 void emit_point(JsonEmitter& out, const RationalPoint3& p) {
@@ -30,7 +31,7 @@ void emit_point(JsonEmitter& out, const Point3& p) {
   // A point given as doubles is its own rounding (most vertices of a scene are).
   const auto& approx = p.approx();
   if (!approx.x().is_point() || !approx.y().is_point() || !approx.z().is_point())
-    return emit_point(out, CGAL::exact(p));
+    return emit_point(out, exact_value(p));
   out.begin_array();
   for (int i = 0; i < 3; ++i) out.number(approx[i].inf() + 0.0);
   out.end_array();
@@ -42,7 +43,7 @@ void emit_exact_point(JsonEmitter& out, const RationalPoint3& p) {
 }
 
 void emit_unit(JsonEmitter& out, const Vector3& v) {
-  const RationalVector3& exact = CGAL::exact(v);
+  const RationalVector3& exact = exact_value(v);
   const double x = rounded(exact.x()), y = rounded(exact.y()), z = rounded(exact.z());
   const double length = std::sqrt(x * x + y * y + z * z);
   out.begin_array();
@@ -57,12 +58,12 @@ void emit_ring(JsonEmitter& out, const Ring2& ring, const FaceOutput& output, bo
   out.begin_array();
   for (const Point2& p : ring) {
     const auto vertex = std::find_if(output.ring.begin(), output.ring.end(), [&](const Point2& q) {
-      return CGAL::identical(p, q) || p == q;
+      return CGAL::identical(p, q) || same_point(p, q);
     });
     if (vertex != output.ring.end()) {
       const Point3& world = face.outer[static_cast<std::size_t>(vertex - output.ring.begin())];
       if (exact)
-        emit_exact_point(out, CGAL::exact(world));
+        emit_exact_point(out, exact_value(world));
       else
         emit_point(out, world);
       continue;
@@ -75,7 +76,7 @@ void emit_ring(JsonEmitter& out, const Ring2& ring, const FaceOutput& output, bo
         continue;
       }
     }
-    const RationalPoint3 world = face.frame.to_world(CGAL::exact(p));
+    const RationalPoint3 world = face.frame.to_world(exact_value(p));
     if (exact)
       emit_exact_point(out, world);
     else
@@ -206,11 +207,11 @@ void emit_curved_region(JsonEmitter& out, const std::vector<CurvedPolygon>& poly
   out.key("axes");
   out.begin_object();
   out.key("origin");
-  emit_exact_point(out, CGAL::exact(frame.origin()));
+  emit_exact_point(out, exact_value(frame.origin()));
   for (const auto& [name, axis] : {std::pair{"u", &frame.u()}, std::pair{"v", &frame.v()}}) {
     out.key(name);
     out.begin_array();
-    const RationalVector3 rational = CGAL::exact(*axis);
+    const RationalVector3 rational = exact_value(*axis);
     for (int k = 0; k < 3; ++k) out.string(rational_string(rational[k]));
     out.end_array();
   }
@@ -257,7 +258,7 @@ void emit_plane(JsonEmitter& out, const Plane3& plane, bool exact) {
   if (exact) {
     for (const Rational& k : canonical_plane(plane)) out.string(rational_string(k));
   } else {
-    const RationalPlane3& rational = CGAL::exact(plane);
+    const RationalPlane3& rational = exact_value(plane);
     const double a = rounded(rational.a()), b = rounded(rational.b()), c = rounded(rational.c()),
                  d = rounded(rational.d());
     const double length = std::sqrt(a * a + b * b + c * c);
@@ -273,7 +274,7 @@ void emit_world_ring(JsonEmitter& out, const std::vector<Point3>& ring, bool exa
   out.begin_array();
   for (const Point3& p : ring)
     if (exact)
-      emit_exact_point(out, CGAL::exact(p));
+      emit_exact_point(out, exact_value(p));
     else
       emit_point(out, p);
   out.end_array();

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "penumbra/geometry/exact.h"
+
 namespace penumbra::io {
 
 std::string rational_string(const Rational& x) {
@@ -12,11 +14,11 @@ std::string rational_string(const Rational& x) {
 }
 
 std::string rational_string(const Exact& x) {
-  return rational_string(CGAL::exact(x));
+  return rational_string(exact_value(x));
 }
 
 std::array<Rational, 4> canonical_plane(const Plane3& plane) {
-  const RationalPlane3& exact = CGAL::exact(plane);
+  const RationalPlane3& exact = exact_value(plane);
   Rational scale = abs(exact.a());
   for (const Rational& c : {exact.b(), exact.c()})
     if (abs(c) > scale) scale = abs(c);

@@ -9,6 +9,7 @@
 #include "face_json.h"
 #include "json_emitter.h"
 #include "penumbra/base/parallel.h"
+#include "penumbra/geometry/exact.h"
 #include "penumbra/io/rational.h"
 
 namespace penumbra::io {
@@ -281,7 +282,7 @@ FaceOutput prepare_output(const ReceivingFace& face, const ShadowResult& result,
   for_each_index(
       points.size(), points.size() > 256,
       [&](std::size_t k) {
-        const RationalPoint3 world = face.frame.to_world(CGAL::exact(*points[k]));
+        const RationalPoint3 world = face.frame.to_world(exact_value(*points[k]));
         for (int i = 0; i < 3; ++i) output.rounded[k][i] = rounded(world[i]);
       },
       64);

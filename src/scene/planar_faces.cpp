@@ -1,6 +1,7 @@
 #include "planar_faces.h"
 
 #include "edge_rings.h"
+#include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/point_order.h"
 
 #include <CGAL/Polygon_set_2.h>
@@ -305,11 +306,11 @@ class PlaneUnion {
 
     // Where triangles overlapped, the union covers the overlap once: less area.
     Rational triangles_area = 0, union_area = 0;
-    for (const auto& polygon : polygons) triangles_area += CGAL::exact(polygon.area());
+    for (const auto& polygon : polygons) triangles_area += exact_value(polygon.area());
     for (const auto& piece : pieces) {
-      union_area += CGAL::exact(piece.outer_boundary().area());
+      union_area += exact_value(piece.outer_boundary().area());
       for (auto hole = piece.holes_begin(); hole != piece.holes_end(); ++hole)
-        union_area += CGAL::exact(hole->area());
+        union_area += exact_value(hole->area());
     }
     overlapped_ = union_area != triangles_area;
 
@@ -416,7 +417,7 @@ class PlaneUnion {
   std::vector<Point3> lift(const Polygon2& polygon) const {
     std::vector<Point3> ring;
     for (const auto& q : polygon.container()) {
-      const RationalPoint2& exact = CGAL::exact(q);
+      const RationalPoint2& exact = exact_value(q);
       const auto found = lifted_.find(exact);
       if (found != lifted_.end()) {
         ring.push_back(epeck_points_[found->second]);

@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 
+#include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/interval.h"
 
 namespace penumbra::detail {
@@ -85,10 +86,10 @@ int edge_holding(const RationalSolid& solid, const RationalPoint3& x) {
 
 RationalSolid rational_solid(const ConvexPolyhedron& solid) {
   RationalSolid result;
-  for (const Point3& p : solid.vertices()) result.vertices.push_back(CGAL::exact(p));
+  for (const Point3& p : solid.vertices()) result.vertices.push_back(exact_value(p));
   std::map<std::array<int, 2>, bool> edges;
   for (const Face& face : solid.faces()) {
-    result.planes.push_back(CGAL::exact(face.plane));
+    result.planes.push_back(exact_value(face.plane));
     const std::size_t n = face.vertex_ids.size();
     for (std::size_t k = 0; k < n; ++k) {
       int a = face.vertex_ids[k], b = face.vertex_ids[(k + 1) % n];
@@ -100,7 +101,7 @@ RationalSolid rational_solid(const ConvexPolyhedron& solid) {
     // The two faces share a plane: bound the polygon by a plane through each edge, along
     // the normal, facing out (edge x n for a counter-clockwise ring seen along n).
     const Face& face = solid.faces().front();
-    const RationalVector3 normal = CGAL::exact(face.normal());
+    const RationalVector3 normal = exact_value(face.normal());
     const std::size_t n = face.vertex_ids.size();
     for (std::size_t k = 0; k < n; ++k) {
       const RationalPoint3& a = result.vertices[face.vertex_ids[k]];

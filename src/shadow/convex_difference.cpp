@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "exact_compare.h"
+#include "penumbra/geometry/exact.h"
 
 namespace penumbra::detail {
 namespace {
@@ -90,10 +91,10 @@ std::optional<Region2> convex_difference(const Ring2& window, const std::vector<
 
   // b comes after a on a's edge (both on it).
   auto ahead = [&](const BoundaryPoint& a, const BoundaryPoint& b) {
-    const auto& p = CGAL::exact(*a.point);
-    const auto& q = CGAL::exact(*b.point);
-    const auto& u = CGAL::exact(window[a.edge]);
-    const auto& v = CGAL::exact(window[(a.edge + 1) % n]);
+    const auto& p = exact_value(*a.point);
+    const auto& q = exact_value(*b.point);
+    const auto& u = exact_value(window[a.edge]);
+    const auto& v = exact_value(window[(a.edge + 1) % n]);
     return CGAL::sign((q.x() - p.x()) * (v.x() - u.x()) + (q.y() - p.y()) * (v.y() - u.y())) ==
            CGAL::POSITIVE;
   };

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "algebraic.h"
+#include "penumbra/geometry/exact.h"
 
 namespace penumbra::detail {
 namespace {
@@ -117,9 +118,9 @@ NamedCorner name_corner(const Quadratic2& before, const Quadratic2& after,
 }
 
 Algebraic value_of(const AlgebraicCoordinate& x) {
-  if (x.value) return algebraic(CGAL::exact(*x.value));
+  if (x.value) return algebraic(exact_value(*x.value));
   std::vector<Rational> c;
-  for (const Exact& k : x.polynomial) c.push_back(CGAL::exact(k));
+  for (const Exact& k : x.polynomial) c.push_back(exact_value(k));
   return all_roots(Poly(std::move(c)))[x.root];
 }
 
@@ -128,7 +129,7 @@ int compare(const ExactCorner& a, const ExactCorner& b) {
   for (const auto member : {&ExactCorner::s, &ExactCorner::t}) {
     const AlgebraicCoordinate &x = a.*member, &y = b.*member;
     if (x.value && y.value) {
-      const Rational &p = CGAL::exact(*x.value), &q = CGAL::exact(*y.value);
+      const Rational &p = exact_value(*x.value), &q = exact_value(*y.value);
       if (p != q) return p < q ? -1 : 1;
       continue;
     }
@@ -141,7 +142,7 @@ int compare(const ExactCorner& a, const ExactCorner& b) {
 // compares edges by their curves (after their corners).
 int compare_curves(const ExactEdge& a, const ExactEdge& b) {
   for (int k = 0; k < 6; ++k) {
-    const Rational &p = CGAL::exact(a.curve[k]), &q = CGAL::exact(b.curve[k]);
+    const Rational &p = exact_value(a.curve[k]), &q = exact_value(b.curve[k]);
     if (p != q) return p < q ? -1 : 1;
   }
   return 0;

@@ -33,6 +33,7 @@
 #include "pencil.h"
 #include "penumbra/base/gauss_legendre.h"
 #include "penumbra/base/parallel.h"
+#include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/interval.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/linear_volumes.h"
@@ -61,15 +62,15 @@ using detail::integer_polynomial;
 using detail::rational_between;
 
 RationalPoint2 rational_point(const Point2& p) {
-  return CGAL::exact(p);
+  return exact_value(p);
 }
 
 // the affine function g . P + h of the face's points, in frame coordinates (the frames of
 // axis-aligned faces are mostly zeros: sparse_dot skips them).
 Affine2 on_face(const FaceFrame& frame, const RationalVector3& g, const Rational& h) {
-  const RationalVector3& u = CGAL::exact(frame.u());
-  const RationalVector3& v = CGAL::exact(frame.v());
-  const RationalPoint3& o = CGAL::exact(frame.origin());
+  const RationalVector3& u = exact_value(frame.u());
+  const RationalVector3& v = exact_value(frame.v());
+  const RationalPoint3& o = exact_value(frame.origin());
   return {detail::sparse_dot(g, u), detail::sparse_dot(g, v), detail::sparse_dot(g, o) + h};
 }
 
@@ -165,13 +166,13 @@ struct UmbraSolid {
 std::shared_ptr<const UmbraSolid> prepare_umbra_solid(const ConvexPolyhedron& solid,
                                                       const Point3& q1, const Point3& q2) {
   auto prepared = std::make_shared<UmbraSolid>();
-  prepared->q1 = CGAL::exact(q1);
-  prepared->q2 = CGAL::exact(q2);
+  prepared->q1 = exact_value(q1);
+  prepared->q2 = exact_value(q2);
   prepared->solid = detail::rational_solid(solid);
   prepared->filter = detail::interval_solid(prepared->solid);
   for (int end = 0; end < 2; ++end)
     for (const Plane3& plane : point_shadow_volume(solid, end ? q2 : q1).planes)
-      prepared->ends[end].push_back(CGAL::exact(plane));
+      prepared->ends[end].push_back(exact_value(plane));
   const RationalVector3 d = prepared->q2 - prepared->q1;
   for (const RationalPoint3& v : prepared->solid.vertices) {
     const RationalVector3 g = CGAL::cross_product(d, v - prepared->q1);
@@ -260,8 +261,8 @@ struct SweptPart {
       std::vector<detail::TracedEdge> edges;
       for (const RingPiece& piece : traced) {
         const auto& c = piece.curve;
-        edges.push_back({{CGAL::exact(c[0]), CGAL::exact(c[1]), CGAL::exact(c[2]),
-                          CGAL::exact(c[3]), CGAL::exact(c[4]), CGAL::exact(c[5])},
+        edges.push_back({{exact_value(c[0]), exact_value(c[1]), exact_value(c[2]),
+                          exact_value(c[3]), exact_value(c[4]), exact_value(c[5])},
                          piece.joint,
                          [this, end = piece.start](int bits) { return enclose(end, bits); }});
       }
@@ -1236,7 +1237,7 @@ std::shared_ptr<const SweptPart> sweep_part(const Face& face, const detail::Face
   auto impl = std::make_shared<SweptPart>();
   impl->face = region;
   impl->frame = face.frame;
-  const RationalPlane3 plane = CGAL::exact(face.plane);
+  const RationalPlane3 plane = exact_value(face.plane);
   const Rational f1 = plane_value(plane, a), f2 = plane_value(plane, b);
   const RationalVector2 axes[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
   if (f1 != f2) {
@@ -1248,7 +1249,7 @@ std::shared_ptr<const SweptPart> sweep_part(const Face& face, const detail::Face
   } else {
     // Parallel to the face: lines along the source's direction, across the face.
     const RationalVector3 d = b - a;
-    const RationalVector3 u = CGAL::exact(face.frame.u()), v = CGAL::exact(face.frame.v());
+    const RationalVector3 u = exact_value(face.frame.u()), v = exact_value(face.frame.v());
     const RationalVector2 delta((d * u) / (u * u), (d * v) / (v * v));
     const Pencil probe = Pencil::parallel(delta, 0, 0);
     std::optional<Rational> low, high;
@@ -1424,7 +1425,7 @@ ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
     return ExactUmbra(std::make_shared<const ExactUmbra::Impl>(
         std::vector<std::shared_ptr<const SweptPart>>{std::move(whole)}));
   }
-  const RationalPoint3 a = CGAL::exact(source->q1), b = CGAL::exact(source->q2);
+  const RationalPoint3 a = exact_value(source->q1), b = exact_value(source->q2);
   // Occluders whose whole shadows are strictly apart never hide the source together: each
   // touching group is swept on its own (in parallel), and none sweeps the others' lines.
   std::vector<Ring2> shadows;

@@ -39,7 +39,7 @@ Ring2 clip(const Ring2& ring, const HalfPlane& half) {
 
 std::optional<Ring2> ring_with_area(const Ring2& ring) {
   Ring2 canonical = canonical_ring(ring);
-  if (canonical.empty() || !CGAL::is_positive(signed_area(canonical))) return std::nullopt;
+  if (canonical.empty() || area_sign(canonical) != CGAL::POSITIVE) return std::nullopt;
   return canonical;
 }
 

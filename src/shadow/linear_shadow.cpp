@@ -1,5 +1,6 @@
 #include "penumbra/shadow/linear_shadow.h"
 
+#include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/interval.h"
 
 #include <algorithm>
@@ -50,19 +51,19 @@ Ring2 projected_contour(const ConvexPolyhedron& solid, const std::vector<int>& c
   // ((Q - O).u + t (v - Q).u) / u.u and the same along v. In rationals (sparse_dot,
   // receiver_clip.h): the points are exact, with no lazy construction behind them.
   using detail::sparse_dot;
-  const RationalPlane3& plane = CGAL::exact(face.plane);
-  const RationalPoint3& from = CGAL::exact(q);
-  const RationalVector3& u = CGAL::exact(face.frame.u());
-  const RationalVector3& v = CGAL::exact(face.frame.v());
-  const Rational& uu = CGAL::exact(face.frame.squared_u());
-  const Rational& vv = CGAL::exact(face.frame.squared_v());
+  const RationalPlane3& plane = exact_value(face.plane);
+  const RationalPoint3& from = exact_value(q);
+  const RationalVector3& u = exact_value(face.frame.u());
+  const RationalVector3& v = exact_value(face.frame.v());
+  const Rational& uu = exact_value(face.frame.squared_u());
+  const Rational& vv = exact_value(face.frame.squared_v());
   const RationalVector3 normal = plane.orthogonal_vector();
-  const RationalVector3 offset = from - CGAL::exact(face.frame.origin());
+  const RationalVector3 offset = from - exact_value(face.frame.origin());
   const Rational fq = sparse_dot(from - CGAL::ORIGIN, normal) + plane.d();
   const Rational su = sparse_dot(offset, u), sv = sparse_dot(offset, v);
   Ring2 ring;
   for (int id : contour) {
-    const RationalVector3 w = CGAL::exact(solid.vertices()[id]) - from;
+    const RationalVector3 w = exact_value(solid.vertices()[id]) - from;
     // F(v) - F(Q) = n.(v - Q).
     const Rational t = -fq / sparse_dot(w, normal);
     ring.push_back(from_exact<Point2>(

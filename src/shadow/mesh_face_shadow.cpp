@@ -12,14 +12,14 @@ namespace penumbra::detail {
 
 FrameMap::FrameMap(const FaceFrame& from, const FaceFrame& to) {
   // A point o + s u + t v of from has, in to, s' = (X - o').u' / (u'.u') and likewise t'.
-  const RationalPoint3& o = CGAL::exact(from.origin());
-  const RationalPoint3& o2 = CGAL::exact(to.origin());
-  const RationalVector3& u = CGAL::exact(from.u());
-  const RationalVector3& v = CGAL::exact(from.v());
-  const RationalVector3& u2 = CGAL::exact(to.u());
-  const RationalVector3& v2 = CGAL::exact(to.v());
-  const Rational& uu2 = CGAL::exact(to.squared_u());
-  const Rational& vv2 = CGAL::exact(to.squared_v());
+  const RationalPoint3& o = exact_value(from.origin());
+  const RationalPoint3& o2 = exact_value(to.origin());
+  const RationalVector3& u = exact_value(from.u());
+  const RationalVector3& v = exact_value(from.v());
+  const RationalVector3& u2 = exact_value(to.u());
+  const RationalVector3& v2 = exact_value(to.v());
+  const Rational& uu2 = exact_value(to.squared_u());
+  const Rational& vv2 = exact_value(to.squared_v());
   const RationalVector3 d = o - o2;
   s0_ = d * u2 / uu2;
   su_ = u * u2 / uu2;
@@ -30,7 +30,7 @@ FrameMap::FrameMap(const FaceFrame& from, const FaceFrame& to) {
 }
 
 Point2 FrameMap::operator()(const Point2& p) const {
-  const RationalPoint2& q = CGAL::exact(p);
+  const RationalPoint2& q = exact_value(p);
   return from_exact<Point2>(
       RationalPoint2(s0_ + su_ * q.x() + sv_ * q.y(), t0_ + tu_ * q.x() + tv_ * q.y()));
 }

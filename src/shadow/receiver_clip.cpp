@@ -3,12 +3,13 @@
 #include <utility>
 
 #include "half_plane.h"
+#include "penumbra/geometry/exact.h"
 
 namespace penumbra::detail {
 namespace {
 
 using Rational = ReceiverClip::Rational;
-using ExactPoint2 = std::decay_t<decltype(CGAL::exact(std::declval<const Point2&>()))>;
+using ExactPoint2 = std::decay_t<decltype(exact_value(std::declval<const Point2&>()))>;
 
 // A vertex of the interval clip: face vertex `corner`, or (corner < 0) the crossing
 // of lines first and second; lines 0..n-1 are the face's edges, n + j plane j's
@@ -29,9 +30,9 @@ Point2 exact_point(ExactPoint2&& point) {
 }  // namespace
 
 ReceiverClip::ReceiverClip(const Face& face) : face_(&face) {
-  const auto& origin = CGAL::exact(face.frame.origin());
-  const auto& u = CGAL::exact(face.frame.u());
-  const auto& v = CGAL::exact(face.frame.v());
+  const auto& origin = exact_value(face.frame.origin());
+  const auto& u = exact_value(face.frame.u());
+  const auto& v = exact_value(face.frame.v());
   for (int i = 0; i < 3; ++i) {
     origin_[i] = origin[i];
     u_[i] = u[i];
@@ -46,7 +47,7 @@ ReceiverClip::ReceiverClip(const Face& face) : face_(&face) {
   // face_ring(face), the frame coordinates (d.u / u.u, d.v / v.v) of each vertex.
   std::vector<ExactPoint2> points;
   for (const Point3& vertex : face.vertices) {
-    const auto& p = CGAL::exact(vertex);
+    const auto& p = exact_value(vertex);
     const Rational d[3] = {p[0] - origin_[0], p[1] - origin_[1], p[2] - origin_[2]};
     points.emplace_back(sparse_dot(d, u_) / uu, sparse_dot(d, v_) / vv);
   }
@@ -67,7 +68,7 @@ ReceiverClip::ReceiverClip(const Face& face) : face_(&face) {
 
 ReceiverClip::Line ReceiverClip::trace(const Plane3& plane) const {
   // restrict_to: n.u s + n.v t + plane(o) for the point o + s u + t v.
-  const auto& p = CGAL::exact(plane);
+  const auto& p = exact_value(plane);
   const auto normal = p.orthogonal_vector();
   return {sparse_dot(normal, u_), sparse_dot(normal, v_), sparse_dot(normal, origin_) + p.d()};
 }
@@ -85,7 +86,7 @@ std::optional<Ring2> ReceiverClip::clip(const std::vector<Plane3>& volume) const
   // The exact vertex: a face corner as it is; the crossing of two lines solved in
   // rationals (never parallel: the clipped edge changed sign strictly).
   auto exact_of = [&](Vertex& vertex) -> const ExactPoint2& {
-    if (vertex.corner >= 0) return CGAL::exact(ring_[static_cast<std::size_t>(vertex.corner)]);
+    if (vertex.corner >= 0) return exact_value(ring_[static_cast<std::size_t>(vertex.corner)]);
     if (!vertex.exact) {
       const Line& first = line_of(vertex.first);
       const Line& second = line_of(vertex.second);

@@ -5,6 +5,7 @@
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/exact_sum.h"
+#include "penumbra/geometry/interval.h"
 
 namespace penumbra {
 namespace {
@@ -22,8 +23,8 @@ Rational twice_signed_area(const Ring2& ring) {
   Rational twice = 0;
   const std::size_t n = ring.size();
   for (std::size_t k = 0; k < n; ++k) {
-    const RationalPoint2& p = CGAL::exact(ring[k]);
-    const RationalPoint2& q = CGAL::exact(ring[(k + 1) % n]);
+    const RationalPoint2& p = exact_value(ring[k]);
+    const RationalPoint2& q = exact_value(ring[(k + 1) % n]);
     twice += p.x() * q.y() - q.x() * p.y();
   }
   return twice;
@@ -38,7 +39,7 @@ Rational twice_signed_area(const Ring2& ring) {
 void add_twice_area(const Ring2& ring, mpz_class& sum, mpz_class& bound) {
   std::vector<Enclosure> x, y;  // X = x.lower
   for (const Point2& p : ring) {
-    const RationalPoint2& exact = CGAL::exact(p);
+    const RationalPoint2& exact = exact_value(p);
     x.push_back(Enclosure::of(exact.x()));
     y.push_back(Enclosure::of(exact.y()));
   }
@@ -89,11 +90,27 @@ Exact signed_area(const Ring2& ring) {
   return exact_number(twice_signed_area(ring) / 2);
 }
 
+CGAL::Sign area_sign(const Ring2& ring) {
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    Interval twice = 0;
+    const std::size_t n = ring.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto& p = CGAL::approx(ring[k]);
+      const auto& q = CGAL::approx(ring[(k + 1) % n]);
+      twice += p.x() * q.y() - q.x() * p.y();
+    }
+    const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(twice);
+    if (CGAL::is_certain(sign)) return sign.make_certain();
+  }
+  return CGAL::sign(twice_signed_area(ring));
+}
+
 Ring2 canonical_ring(const Ring2& ring) {
   Ring2 out;
   for (const Point2& p : ring)
-    if (out.empty() || out.back() != p) out.push_back(p);
-  while (out.size() > 1 && out.front() == out.back()) out.pop_back();
+    if (out.empty() || !same_point(out.back(), p)) out.push_back(p);
+  while (out.size() > 1 && same_point(out.front(), out.back())) out.pop_back();
   // Drop vertices whose neighbours are collinear with them, until none is left.
   bool changed = true;
   while (changed && out.size() >= 3) {
@@ -102,7 +119,7 @@ Ring2 canonical_ring(const Ring2& ring) {
       const std::size_t n = out.size();
       const Point2& before = out[(k + n - 1) % n];
       const Point2& after = out[(k + 1) % n];
-      if (CGAL::collinear(before, out[k], after)) {
+      if (orientation_sign(before, out[k], after) == CGAL::ZERO) {
         out.erase(out.begin() + static_cast<std::ptrdiff_t>(k));
         changed = true;
         --k;
@@ -126,13 +143,13 @@ Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> ar
             [](const Polygon2& a, const Polygon2& b) { return ring_less(a.outer, b.outer); });
   if (area) {
     region.area = std::move(*area);
-  } else if (polygons.size() == 1) {
-    region.area = exact_number(exact_area(polygons));
   } else if (!polygons.empty()) {
     // A ground under a city is one region of 10^4 polygons. Their exact areas, rationals of
     // unrelated denominators, are computed and added when the total's exact value is asked
     // for (exact_sum.h); until then integer enclosures of them (each polygon on its own
-    // thread) give the interval and the printed double.
+    // thread) give the interval and the printed double. The same for one polygon: most
+    // areas are only printed, and the enclosure's integers cost less than the rational
+    // shoelace's gcds (a shadow of every triangle of a mesh is such a region).
     std::vector<Enclosure> areas(polygons.size());
     for_each_index(
         polygons.size(), polygons.size() > 64,

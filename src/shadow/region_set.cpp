@@ -12,6 +12,7 @@
 #include "exact_compare.h"
 #include "half_plane.h"
 #include "penumbra/base/parallel.h"
+#include "penumbra/geometry/exact.h"
 #include "polygon_set_region.h"
 
 namespace penumbra::detail {
@@ -168,29 +169,29 @@ std::pair<Region2, Region2> unite_and_complement(
     for (std::size_t k : groups[g]) members.push_back(rings[k]);
     join(members).polygons_with_holes(std::back_inserter(pieces[g]));
   });
-  std::vector<PolygonWithHoles> all;
-  for (auto& group : pieces)
-    for (auto& piece : group) all.push_back(std::move(piece));
 
-  // The lit part: the window less the pieces that touch its boundary (a Boolean
-  // difference), whose faces and the pieces' holes are the faces the other pieces may
-  // lie in; each other piece is a hole of the innermost face holding one of its vertices.
+  // The lit part: the window less the groups with a piece that touches its boundary (a
+  // Boolean difference), whose faces and the other pieces' holes are the faces the other
+  // pieces may lie in; each other piece is a hole of the innermost face holding one of its
+  // vertices. What is subtracted is the union of those groups' rings, not their pieces made
+  // into polygons again: a piece's outer boundary may touch itself at a vertex (a union
+  // pinched by a thin inlet, as on faces of the FZK house at 14:00), which CGAL gives as one
+  // polygon but cannot insert again as one (its sweep crashed on it).
   std::vector<LitFace> faces;
   std::vector<const PolygonWithHoles*> inner;
   {
     PolygonSet rest;
     rest.insert(Polygon(window.begin(), window.end()));
-    std::vector<PolygonWithHoles> touching;
-    for (const PolygonWithHoles& piece : all)
-      if (touches(piece.outer_boundary(), window))
-        touching.push_back(piece);
+    std::vector<Ring2> touching;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      if (std::any_of(pieces[g].begin(), pieces[g].end(), [&](const PolygonWithHoles& piece) {
+            return touches(piece.outer_boundary(), window);
+          }))
+        for (std::size_t k : groups[g]) touching.push_back(rings[k]);
       else
-        inner.push_back(&piece);
-    if (!touching.empty()) {
-      PolygonSet removed;
-      removed.join(touching.begin(), touching.end());
-      rest.difference(removed);
+        for (const PolygonWithHoles& piece : pieces[g]) inner.push_back(&piece);
     }
+    if (!touching.empty()) rest.difference(join(touching));
     std::vector<PolygonWithHoles> parts;
     rest.polygons_with_holes(std::back_inserter(parts));
     for (PolygonWithHoles& part : parts)
@@ -245,9 +246,12 @@ std::pair<Region2, Region2> unite_and_complement(
   };
   std::vector<PolygonWithHoles> lit;
   for (LitFace& face : faces) lit.emplace_back(face.outer, face.holes.begin(), face.holes.end());
+  std::vector<PolygonWithHoles> all;
+  for (const std::vector<PolygonWithHoles>& group : pieces)
+    all.insert(all.end(), group.begin(), group.end());
   Region2 shadow = rings.size() == 1 ? convex_region(rings.front()) : canonical(all);
   // The lit part and the shadow tile the window: its area is the window's less theirs.
-  const Exact lit_area = exact_number(CGAL::exact(signed_area(window)) - CGAL::exact(shadow.area));
+  const Exact lit_area = exact_number(exact_value(signed_area(window)) - exact_value(shadow.area));
   return {std::move(shadow), canonical(lit, lit_area)};
 }
 

@@ -162,7 +162,7 @@ std::vector<RegionShare> plan_region_shares(const Scene& scene, const SunHoursRe
     for (const Point2& p : plan)
       ring.push_back(face.frame.to_frame(
           Point3(p.x(), p.y(), -(plane.a() * p.x() + plane.b() * p.y() + plane.d()) / plane.c())));
-    if (CGAL::is_negative(signed_area(ring))) std::reverse(ring.begin(), ring.end());
+    if (area_sign(ring) == CGAL::NEGATIVE) std::reverse(ring.begin(), ring.end());
     const Region2 prism = canonical_region({Polygon2{canonical_ring(ring), {}}});
     const Region2 inside = intersection(canonical_region({window_of(face)}), prism);
     if (inside.empty()) continue;

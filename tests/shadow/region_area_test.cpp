@@ -1,7 +1,8 @@
-// The area of a region of many polygons (canonical_region): an exact sum made lazily from
-// integer enclosures of the polygons' areas (exact_sum.h). Checked against the shoelace
-// formula evaluated here in rationals, polygon by polygon, on random polygons with rational
-// corners of unrelated denominators (fixed seed).
+// The area of a region (canonical_region): an exact sum made lazily from integer enclosures
+// of the polygons' areas (exact_sum.h), for one polygon as for many; and the sign of a ring's
+// area (area_sign). Checked against the shoelace formula evaluated here in rationals, polygon
+// by polygon, on random polygons with rational corners of unrelated denominators and on
+// lattice rings with zero areas (fixed seeds).
 
 #include <boost/test/unit_test.hpp>
 
@@ -20,6 +21,13 @@ Rational random_coordinate(std::mt19937& random, int range) {
   const long q = denominator(random);
   std::uniform_int_distribution<long> numerator(-range * q, range * q);
   Rational x(numerator(random), q);
+  x.canonicalize();
+  return x;
+}
+
+// returns n / 3 in lowest terms (the form every rational of the library is in).
+Rational third(int n) {
+  Rational x(n, 3);
   x.canonicalize();
   return x;
 }
@@ -110,6 +118,47 @@ BOOST_AUTO_TEST_CASE(squares_with_integer_corners_have_their_integer_area) {
   const Region2 region = canonical_region(squares);
   BOOST_TEST(truncated_to_double(region.area).value_or(0) == 40.0 * 41 * 81 / 6);
   BOOST_TEST(CGAL::exact(region.area) == Rational(40 * 41 * 81 / 6));
+}
+
+BOOST_AUTO_TEST_CASE(one_polygon_has_its_shoelace_area) {
+  std::mt19937 random(1980);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Rational cx = random_coordinate(random, 100), cy = random_coordinate(random, 100);
+    const Ring2 ring = canonical_ring(random_quadrilateral(random, cx, cy));
+    const Rational expected = shoelace(ring);
+    const Region2 region = canonical_region({Polygon2{ring, {}}});
+    const CGAL::Interval_nt<false> interval = region.area.approx();
+    BOOST_TEST(Rational(interval.inf()) <= expected);
+    BOOST_TEST(expected <= Rational(interval.sup()));
+    if (const std::optional<double> value = truncated_to_double(region.area))
+      BOOST_TEST(*value == expected.get_d());
+    BOOST_TEST(CGAL::exact(region.area) == expected);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(area_sign_is_the_sign_of_the_shoelace_area) {
+  // Rings of 3 to 6 corners on a lattice of thirds (not doubles: the intervals are not
+  // points) in a 4 x 4 square, so that many are flat or cancel to a zero area, which the
+  // intervals cannot decide; and the same rings far from the origin.
+  std::mt19937 random(1995);
+  std::uniform_int_distribution<int> coordinate(0, 12), corners(3, 6);
+  int zero = 0, positive = 0, negative = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const Rational offset = third(trial % 2 ? 1000003 : 0);
+    Ring2 ring;
+    for (int k = corners(random); k > 0; --k)
+      ring.push_back(point_of(offset + third(coordinate(random)),
+                              offset + third(coordinate(random) % (trial % 5 ? 13 : 2))));
+    const CGAL::Sign expected = CGAL::sign(shoelace(ring));
+    BOOST_TEST(area_sign(ring) == expected);
+    zero += expected == CGAL::ZERO;
+    positive += expected == CGAL::POSITIVE;
+    negative += expected == CGAL::NEGATIVE;
+  }
+  // All three outcomes are exercised, zero (left to rationals) often.
+  BOOST_TEST(zero > 100);
+  BOOST_TEST(positive > 300);
+  BOOST_TEST(negative > 300);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

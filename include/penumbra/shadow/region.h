@@ -34,6 +34,10 @@ struct Region2 {
 // returns the signed area of a ring (positive when counter-clockwise), exactly.
 Exact signed_area(const Ring2& ring);
 
+// returns the sign of signed_area(ring): from the shoelace sum in intervals when they decide
+// it (then it is the exact sign), otherwise from the exact area.
+CGAL::Sign area_sign(const Ring2& ring);
+
 // returns ring without repeated and collinear vertices, rotated to start at its
 // lexicographically smallest vertex (orientation kept). Empty when nothing with
 // area is left.
