@@ -226,15 +226,21 @@ int run_sun_hours(const SunHoursArguments& arguments) {
   const bool to_stdout =
       arguments.output == "-" || (arguments.output.empty() && arguments.report.empty() &&
                                   !threshold && arguments.svg.empty() && arguments.png.empty());
+  // The heat maps are drawn from the document; the JSON alone is written without it.
   nlohmann::json document;
-  if (to_stdout || !arguments.output.empty() || !arguments.svg.empty() || !arguments.png.empty())
-    document = io::sun_hours_json(scene, result, header, arguments.exact);
+  const bool drawn = !arguments.svg.empty() || !arguments.png.empty();
+  if (drawn) document = io::sun_hours_json(scene, result, header, arguments.exact);
+  const auto write_json = [&](std::ostream& out) {
+    if (drawn)
+      out << io::format_json(document);
+    else
+      io::write_sun_hours_json(out, scene, result, header, arguments.exact);
+  };
   // Every file is written whole or not at all; the first to fail stops the rest.
   if (to_stdout)
-    std::cout << io::format_json(document);
+    write_json(std::cout);
   else if (!arguments.output.empty())
-    write_atomically(arguments.output,
-                     [&](std::ostream& out) { out << io::format_json(document); });
+    write_atomically(arguments.output, write_json);
   if (!arguments.report.empty())
     write_atomically(arguments.report,
                      [&](std::ostream& out) { io::write_sun_hours_csv(out, scene, result); });

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/exact_sum.h"
 #include "penumbra/io/shadow_json.h"
@@ -49,6 +50,29 @@ void emit_unit(JsonEmitter& out, const Vector3& v) {
   out.begin_array();
   for (double c : {x, y, z}) out.number(c / length + 0.0);
   out.end_array();
+}
+
+void add_points(FaceOutput& output, std::vector<const Point2*>& points, const Ring2& ring) {
+  for (const Point2& p : ring)
+    if (output.world.emplace(p.id(), points.size()).second) points.push_back(&p);
+}
+
+void add_points(FaceOutput& output, std::vector<const Point2*>& points, const Region2& region) {
+  for (const Polygon2& polygon : region.polygons) {
+    add_points(output, points, polygon.outer);
+    for (const Ring2& hole : polygon.holes) add_points(output, points, hole);
+  }
+}
+
+void round_points(FaceOutput& output, const std::vector<const Point2*>& points) {
+  output.rounded.resize(points.size());
+  for_each_index(
+      points.size(), points.size() > 256,
+      [&](std::size_t k) {
+        const RationalPoint3 world = output.face.frame.to_world(exact_value(*points[k]));
+        for (int i = 0; i < 3; ++i) output.rounded[k][i] = rounded(world[i]);
+      },
+      64);
 }
 
 // the ring's points in the world: a face vertex as it is, any other point computed in
@@ -102,17 +126,18 @@ void emit_rings(JsonEmitter& out, const Polygon2& polygon, const FaceOutput& fac
 void emit_polygons(JsonEmitter& out, const Region2& region, const FaceOutput& face, bool exact) {
   out.key("polygons");
   out.begin_array();
-  for (const Polygon2& polygon : region.polygons) {
-    out.begin_object();
+  out.values(region.polygons.size(), [&](std::size_t k, JsonEmitter& value) {
+    const Polygon2& polygon = region.polygons[k];
+    value.begin_object();
     if (exact) {
-      out.key("exact");
-      out.begin_object();
-      emit_rings(out, polygon, face, true);
-      out.end_object();
+      value.key("exact");
+      value.begin_object();
+      emit_rings(value, polygon, face, true);
+      value.end_object();
     }
-    emit_rings(out, polygon, face, false);
-    out.end_object();
-  }
+    emit_rings(value, polygon, face, false);
+    value.end_object();
+  });
   out.end_array();
 }
 

@@ -45,6 +45,14 @@ inline FaceOutput plain_output(const ReceivingFace& face) {
   return FaceOutput{face, face.ring, {}, {}, {}};
 }
 
+// adds the points of a ring or region not seen yet (by identity) to points, giving each its
+// slot of output.world.
+void add_points(FaceOutput& output, std::vector<const Point2*>& points, const Ring2& ring);
+void add_points(FaceOutput& output, std::vector<const Point2*>& points, const Region2& region);
+// computes output.rounded: the world doubles of points, in the slots add_points gave them,
+// across threads.
+void round_points(FaceOutput& output, const std::vector<const Point2*>& points);
+
 // the ring's points in the world: a face vertex as it is, any other point computed in
 // rationals from its frame coordinates.
 void emit_ring(JsonEmitter& out, const Ring2& ring, const FaceOutput& output, bool exact);

@@ -1,9 +1,17 @@
 #include "json_emitter.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
+#include "penumbra/base/parallel.h"
+
 namespace penumbra::io {
+
+void JsonEmitter::values(std::size_t count,
+                         const std::function<void(std::size_t, JsonEmitter&)>& write) {
+  for (std::size_t k = 0; k < count; ++k) write(k, *this);
+}
 
 nlohmann::json& TreeEmitter::put(nlohmann::json value) {
   if (stack_.empty()) {
@@ -122,6 +130,66 @@ void TextEmitter::boolean(bool value) {
 void TextEmitter::string(const std::string& value) {
   before_value(false);
   out_ += nlohmann::json(value).dump();  // its escaping
+}
+
+void TextEmitter::values(std::size_t count,
+                         const std::function<void(std::size_t, JsonEmitter&)>& write) {
+  // A value of the current array starts where its closing bracket is indented: at this
+  // emitter's depth, the array on the stack.
+  std::vector<std::string> texts(count);
+  for_each_index(
+      count, count > 16,
+      [&](std::size_t k) {
+        TextEmitter emitter(texts[k], depth());
+        write(k, emitter);
+      },
+      8);
+  for (const std::string& text : texts) {
+    before_value(!text.empty() && text.front() == '{');
+    out_ += text;
+  }
+}
+
+// The document is an object whose keys nlohmann::json keeps sorted: the members before
+// "faces" are written at begin(), the faces as they come, the rest at end().
+void FacesDocumentWriter::begin(const nlohmann::json& header, std::size_t faces) {
+  faces_ = faces;
+  std::string text = "{\n";
+  for (const auto& [key, value] : header.items()) {
+    if (key > "faces") {
+      after_faces_[key] = value;
+      continue;
+    }
+    format_member(text, key, value, 0);
+    text += ",\n";
+  }
+  text += " \"faces\": ";
+  text += faces == 0 ? "[]" : "[\n";
+  out_ << text;
+}
+
+void FacesDocumentWriter::face(const std::string& text) {
+  out_ << "  " << text << (++written_ < faces_ ? ",\n" : "\n ]");
+}
+
+void FacesDocumentWriter::end() {
+  std::string text;
+  for (const auto& [key, value] : after_faces_.items()) {
+    text += ",\n";
+    format_member(text, key, value, 0);
+  }
+  out_ << text << "\n}\n";
+}
+
+void write_faces(FacesDocumentWriter& writer, std::size_t count,
+                 const std::function<void(std::size_t, std::string&)>& text) {
+  constexpr std::size_t kBlock = 256;
+  std::vector<std::string> texts;
+  for (std::size_t first = 0; first < count; first += kBlock) {
+    texts.assign(std::min(kBlock, count - first), std::string());
+    for_each_index(texts.size(), true, [&](std::size_t k) { text(first + k, texts[k]); });
+    for (const std::string& entry : texts) writer.face(entry);
+  }
 }
 
 }  // namespace penumbra::io

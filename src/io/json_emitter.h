@@ -7,6 +7,8 @@
 // so that both give the same document.
 
 #include <cstddef>
+#include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,11 @@ class JsonEmitter {
   virtual void integer(std::size_t value) = 0;
   virtual void boolean(bool value) = 0;
   virtual void string(const std::string& value) = 0;
+  // emits count values into the current array, value k by write(k, emitter). Here one after
+  // the other; an emitter of text writes them apart, across threads, and places them in
+  // order (a ground's thousands of polygons).
+  virtual void values(std::size_t count,
+                      const std::function<void(std::size_t, JsonEmitter&)>& write);
 };
 
 // Builds a tree.
@@ -72,6 +79,8 @@ class TextEmitter : public JsonEmitter {
   void integer(std::size_t value) override;
   void boolean(bool value) override;
   void string(const std::string& value) override;
+  void values(std::size_t count,
+              const std::function<void(std::size_t, JsonEmitter&)>& write) override;
 
  private:
   enum class Kind { object, undecided_array, expanded_array, compact_array };
@@ -89,5 +98,32 @@ class TextEmitter : public JsonEmitter {
   int depth_;
   std::vector<Level> levels_;
 };
+
+// writes one member "key": value of an object at depth, as format_json lays it out
+// (shadow_json.cpp).
+void format_member(std::string& out, const std::string& key, const nlohmann::json& value,
+                   int depth);
+
+// Writes, as format_json lays it out, a document whose "faces" member is an array too large
+// to hold as a tree: begin() writes the header's members that sort before "faces", face()
+// each entry, given as text at depth 2 (TextEmitter(text, 2)), end() the members after.
+class FacesDocumentWriter {
+ public:
+  explicit FacesDocumentWriter(std::ostream& out) : out_(out) {}
+  void begin(const nlohmann::json& header, std::size_t faces);
+  void face(const std::string& text);
+  void end();
+
+ private:
+  std::ostream& out_;
+  nlohmann::json after_faces_;  // the header's keys that sort after "faces"
+  std::size_t written_ = 0, faces_ = 0;
+};
+
+// writes count face entries to writer in order, each made by text(k, out) into out (at
+// depth 2), a block of them at a time across threads: what a document of every face
+// holds at once is one block's text.
+void write_faces(FacesDocumentWriter& writer, std::size_t count,
+                 const std::function<void(std::size_t, std::string&)>& text);
 
 }  // namespace penumbra::io

@@ -52,7 +52,6 @@ void format(std::string& out, const json& node, int depth) {
 
 }  // namespace
 
-// writes one member "key": value of an object at depth, as format() does.
 void format_member(std::string& out, const std::string& key, const json& value, int depth) {
   out += std::string(static_cast<std::size_t>(depth) + 1, ' ') + json(key).dump() + ": ";
   format(out, value, depth + 1);
@@ -251,22 +250,12 @@ FaceOutput prepare_output(const ReceivingFace& face, const ShadowResult& result,
   if (occluder_count < kCachedOccluders) return output;
   std::vector<const Point2*> points;
   std::vector<const OccluderShadow*> occluders;
-  const auto add_ring = [&](const Ring2& ring) {
-    for (const Point2& p : ring)
-      if (output.world.emplace(p.id(), points.size()).second) points.push_back(&p);
-  };
-  const auto add_region = [&](const Region2& region) {
-    for (const Polygon2& polygon : region.polygons) {
-      add_ring(polygon.outer);
-      for (const Ring2& hole : polygon.holes) add_ring(hole);
-    }
-  };
   for (const LightShadows& light : result.lights) {
     const FaceShadow& shadow = light.faces[r];
     for (const Region2* region : {&shadow.shadow, &shadow.umbra, &shadow.penumbra, &shadow.lit})
-      add_region(*region);
+      add_points(output, points, *region);
     for (const OccluderShadow& occluder : shadow.occluders) {
-      add_ring(occluder.polygon);
+      add_points(output, points, occluder.polygon);
       occluders.push_back(&occluder);
     }
   }
@@ -278,14 +267,7 @@ FaceOutput prepare_output(const ReceivingFace& face, const ShadowResult& result,
       },
       16);
   for (std::size_t k = 0; k < occluders.size(); ++k) output.occluder_area[occluders[k]] = areas[k];
-  output.rounded.resize(points.size());
-  for_each_index(
-      points.size(), points.size() > 256,
-      [&](std::size_t k) {
-        const RationalPoint3 world = face.frame.to_world(exact_value(*points[k]));
-        for (int i = 0; i < 3; ++i) output.rounded[k][i] = rounded(world[i]);
-      },
-      64);
+  round_points(output, points);
   return output;
 }
 
@@ -374,37 +356,20 @@ void stream_shadow_document(const Scene& scene, const ShadowResult& result,
   for (ShadowDocumentSink* sink : sinks) sink->end();
 }
 
-// The document is an object whose keys sort as "culling" < "faces" < "lights" <
-// "penumbra_shadows" (nlohmann::json keeps them sorted): the members before "faces" are
-// written at begin(), the faces as they come, the rest at end().
+ShadowJsonWriter::ShadowJsonWriter(std::ostream& out)
+    : writer_(std::make_unique<FacesDocumentWriter>(out)) {}
+ShadowJsonWriter::~ShadowJsonWriter() = default;
+
 void ShadowJsonWriter::begin(const json& header, std::size_t faces) {
-  faces_ = faces;
-  std::string text = "{\n";
-  for (const auto& [key, value] : header.items()) {
-    if (key > "faces") {
-      after_faces_[key] = value;
-      continue;
-    }
-    format_member(text, key, value, 0);
-    text += ",\n";
-  }
-  text += " \"faces\": ";
-  text += faces == 0 ? "[]" : "[\n";
-  out_ << text;
+  writer_->begin(header, faces);
 }
 
 void ShadowJsonWriter::faces(const ShadowFaceBlock& block) {
-  for (const std::string& text : block.texts())
-    out_ << "  " << text << (++written_ < faces_ ? ",\n" : "\n ]");
+  for (const std::string& text : block.texts()) writer_->face(text);
 }
 
 void ShadowJsonWriter::end() {
-  std::string text;
-  for (const auto& [key, value] : after_faces_.items()) {
-    text += ",\n";
-    format_member(text, key, value, 0);
-  }
-  out_ << text << "\n}\n";
+  writer_->end();
 }
 
 }  // namespace penumbra::io

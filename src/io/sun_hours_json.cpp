@@ -11,11 +11,28 @@ namespace {
 using nlohmann::json;
 using studies::SunHoursResult;
 
+// the fewest points listed in a face's parts for which their world doubles are computed
+// ahead.
+constexpr std::size_t kRoundedAhead = 256;
+
 // The entry of "faces" for receiver r; members in key order.
 void emit_face(JsonEmitter& out, const Scene& scene, const SunHoursResult& result, std::size_t r,
                bool exact) {
   const ReceivingFace face = receiving_face(scene, result.faces, r);
-  const FaceOutput output = plain_output(face);
+  FaceOutput output = plain_output(face);
+  // A ground under a city holds millions of points, each in the rings of the parts on
+  // either side: their world doubles are computed once, ahead, across threads.
+  std::size_t listed = 0;
+  for (const Coverage& part : result.hours[r].parts)
+    for (const Polygon2& polygon : part.region.polygons) {
+      listed += polygon.outer.size();
+      for (const Ring2& hole : polygon.holes) listed += hole.size();
+    }
+  if (listed >= kRoundedAhead) {
+    std::vector<const Point2*> points;
+    for (const Coverage& part : result.hours[r].parts) add_points(output, points, part.region);
+    round_points(output, points);
+  }
   emit_face_entry(out, output, exact, [&] {
     out.key("hours");
     out.begin_array();
@@ -48,27 +65,37 @@ SunHoursHeader sun_hours_header(const Scene& scene, const studies::SunHoursPlan&
   return header;
 }
 
-json sun_hours_json(const Scene& scene, const SunHoursResult& result, const SunHoursHeader& header,
-                    bool exact) {
+namespace {
+
+// the document without its faces.
+json header_json(const SunHoursResult& result, const SunHoursHeader& header) {
   json times = json::array();
   for (const studies::SunStep& step : result.steps)
     if (step.up())
       times.push_back({{"time", sun::format_date_time(step.time, header.offset_minutes)},
                        {"azimuth_deg", step.position.azimuth_deg},
                        {"elevation_deg", step.position.elevation_deg}});
-  json document = {{"penumbra_sun_hours", 1},
-                   {"sun",
-                    {{"name", header.sun},
-                     {"latitude", header.site.latitude_deg},
-                     {"longitude", header.site.longitude_deg},
-                     {"north_deg", header.north_deg}}},
-                   {"steps",
-                    {{"from", header.from},
-                     {"to", header.to},
-                     {"step_minutes", result.minutes(1)},
-                     {"count", result.steps.size()},
-                     {"sun_up", result.steps_up()},
-                     {"times", std::move(times)}}}};
+  return {{"penumbra_sun_hours", 1},
+          {"sun",
+           {{"name", header.sun},
+            {"latitude", header.site.latitude_deg},
+            {"longitude", header.site.longitude_deg},
+            {"north_deg", header.north_deg}}},
+          {"steps",
+           {{"from", header.from},
+            {"to", header.to},
+            {"step_minutes", result.minutes(1)},
+            {"count", result.steps.size()},
+            {"sun_up", result.steps_up()},
+            {"times", std::move(times)}}},
+          {"longest_minutes", result.minutes(result.longest_count())}};
+}
+
+}  // namespace
+
+json sun_hours_json(const Scene& scene, const SunHoursResult& result, const SunHoursHeader& header,
+                    bool exact) {
+  json document = header_json(result, header);
   json faces = json::array();
   for (std::size_t r = 0; r < result.faces.receivers.size(); ++r) {
     TreeEmitter tree;
@@ -76,8 +103,19 @@ json sun_hours_json(const Scene& scene, const SunHoursResult& result, const SunH
     faces.push_back(std::move(tree.result()));
   }
   document["faces"] = std::move(faces);
-  document["longest_minutes"] = result.minutes(result.longest_count());
   return document;
+}
+
+void write_sun_hours_json(std::ostream& out, const Scene& scene, const SunHoursResult& result,
+                          const SunHoursHeader& header, bool exact) {
+  FacesDocumentWriter writer(out);
+  const std::size_t count = result.faces.receivers.size();
+  writer.begin(header_json(result, header), count);
+  write_faces(writer, count, [&](std::size_t r, std::string& text) {
+    TextEmitter emitter(text, 2);
+    emit_face(emitter, scene, result, r, exact);
+  });
+  writer.end();
 }
 
 std::vector<double> areas_at_least(const Scene& scene, const SunHoursResult& result, std::size_t r,

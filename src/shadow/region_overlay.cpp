@@ -6,7 +6,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
-#include <set>
+#include <optional>
 
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
 #include <CGAL/Arr_extended_dcel.h>
@@ -15,6 +15,7 @@
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include "penumbra/base/parallel.h"
+#include "penumbra/geometry/exact.h"
 
 namespace penumbra {
 namespace {
@@ -53,15 +54,104 @@ std::vector<std::vector<Piece>> clusters_of(const std::vector<Piece>& pieces) {
   return clusters;
 }
 
-// One arrangement of the edges of all the layers overlaid, each edge knowing the layers it
-// bounds and on which side (Arr_consolidated_curve_data_traits_2: overlapping edges of
-// several layers become one edge with all their marks), each face its count.
+// One arrangement of the edges of all the layers overlaid, each edge knowing the segments
+// of the layers' rings it lies on (Arr_consolidated_curve_data_traits_2: overlapping
+// segments become one edge with all their indices), hence the layers it bounds and on
+// which side, each face its count.
 using SegmentTraits = CGAL::Arr_segment_traits_2<Kernel>;
-// A mark: +k when layer k - 1 lies on the left of the edge directed from its
-// lexicographically smaller end to its larger one, -k when on its right.
-using Traits = CGAL::Arr_consolidated_curve_data_traits_2<SegmentTraits, long>;
-using Dcel = CGAL::Arr_face_extended_dcel<Traits, long>;
+using Traits = CGAL::Arr_consolidated_curve_data_traits_2<SegmentTraits, std::size_t>;
+// What a face keeps: its count, and its place in the arrangement's list of faces (numbered
+// once built, so that passes over the map index vectors instead of ordered maps of handles).
+struct FaceData {
+  long count = 0;
+  std::size_t id = 0;
+};
+// A vertex and a halfedge keep their places in the lists of vertices and halfedges.
+using Dcel = CGAL::Arr_extended_dcel<Traits, std::size_t, std::size_t, FaceData>;
 using Arrangement = CGAL::Arrangement_2<Traits, Dcel>;
+
+// The line through a segment's ends, a x + b y + c = 0, with integer coefficients: CGAL's
+// line through two points (a = py - qy, b = qx - px, c = px qy - py qx) times the least
+// common multiple of its coefficients' denominators.
+struct IntegerLine {
+  mpz_class a, b, c;
+};
+
+IntegerLine integer_line(const Point2& from, const Point2& to) {
+  const RationalPoint2& p = exact_value(from);
+  const RationalPoint2& q = exact_value(to);
+  const Rational a = p.y() - q.y(), b = q.x() - p.x(), c = p.x() * q.y() - p.y() * q.x();
+  mpz_class common;
+  mpz_lcm(common.get_mpz_t(), a.get_den_mpz_t(), b.get_den_mpz_t());
+  mpz_lcm(common.get_mpz_t(), common.get_mpz_t(), c.get_den_mpz_t());
+  return {a.get_num() * (common / a.get_den()), b.get_num() * (common / b.get_den()),
+          c.get_num() * (common / c.get_den())};
+}
+
+// returns the point where two lines cross, or nothing when they are parallel. Cramer's
+// rule on a1 x + b1 y = -c1, a2 x + b2 y = -c2: x = (b1 c2 - b2 c1) / d,
+// y = (a2 c1 - a1 c2) / d, d = a1 b2 - a2 b1, in integers, then one reduction (a gcd) per
+// coordinate, where CGAL's lazy intersection of the two lines computes in rationals and
+// reduces after every operation.
+std::optional<RationalPoint2> crossing(const IntegerLine& l, const IntegerLine& m) {
+  const mpz_class d = l.a * m.b - m.a * l.b;
+  if (sgn(d) == 0) return std::nullopt;
+  Rational x(l.b * m.c - m.b * l.c, d), y(m.a * l.c - l.a * m.c, d);
+  x.canonicalize();
+  y.canonicalize();
+  return RationalPoint2(x, y);
+}
+
+// A segment of a layer's ring and the layer's mark on it: +k when layer k - 1 lies on the
+// left of the segment directed from its lexicographically smaller end to its larger one,
+// -k when on its right.
+struct MarkedSegment {
+  SegmentTraits::Curve_2 segment;
+  long mark;
+};
+
+// returns the points of the arrangement's vertices by vertex id, each with its exact value:
+// a vertex where segments cross, whose point CGAL made as a lazy intersection, gets the same
+// point computed from the integer lines of two segments through it (the exact values of
+// the crossings were a third of the time of a ground's overlay); the segments' ends are
+// kept as they are. Across threads.
+std::vector<Point2> exact_vertices(const Arrangement& arrangement,
+                                   const std::vector<MarkedSegment>& segments) {
+  std::vector<IntegerLine> lines(segments.size());
+  for_each_index(
+      segments.size(), segments.size() > 256,
+      [&](std::size_t k) {
+        lines[k] = integer_line(segments[k].segment.source(), segments[k].segment.target());
+      },
+      64);
+  std::vector<Arrangement::Vertex_const_handle> vertices;
+  for (auto v = arrangement.vertices_begin(); v != arrangement.vertices_end(); ++v)
+    vertices.push_back(v);
+  std::vector<Point2> points(vertices.size());
+  for_each_index(
+      vertices.size(), vertices.size() > 256,
+      [&](std::size_t k) {
+        const auto vertex = vertices[k];
+        Point2& point = points[vertex->data()];
+        point = vertex->point();
+        if (has_exact_value(point) || vertex->is_isolated()) return;
+        const IntegerLine* first = nullptr;
+        auto halfedge = vertex->incident_halfedges();
+        const auto end = halfedge;
+        do {
+          for (const std::size_t segment : halfedge->curve().data()) {
+            if (!first) {
+              first = &lines[segment];
+            } else if (std::optional<RationalPoint2> p = crossing(*first, lines[segment])) {
+              point = point_from<Point2>(std::move(*p));
+              return;
+            }
+          }
+        } while (++halfedge != end);
+      },
+      64);
+  return points;
+}
 
 // A region to overlay: its polygons (canonical rings, inside on the left of each) and what
 // it adds to the count of the points it holds.
@@ -70,22 +160,28 @@ struct Layer {
   long weight = 1;
 };
 
+// An overlay: the arrangement, and its vertices' points with their exact values.
+struct Overlay {
+  std::unique_ptr<Arrangement> arrangement;
+  std::vector<Point2> points;  // by vertex id
+};
+
 // returns the overlay of layers made in one sweep (CGAL::insert finds every meeting of
 // edges, touching included: canonical rings may touch themselves with a vertex on an edge,
 // which insertion as non-crossing curves does not allow), each face counting the weights of
 // the layers that hold it. Counts spread from the unbounded face (0): crossing an edge
 // from a face into its neighbour subtracts the weight of each layer the edge bounds on the
 // face's side and adds that of each it bounds on the neighbour's.
-std::unique_ptr<Arrangement> overlay(const std::vector<Layer>& layers) {
-  std::vector<Traits::Curve_2> curves;
+Overlay overlay(const std::vector<Layer>& layers) {
+  std::vector<MarkedSegment> segments;
   for (std::size_t k = 0; k < layers.size(); ++k) {
     const long mark = static_cast<long>(k) + 1;
     const auto add = [&](const Ring2& ring) {
       for (std::size_t i = 0; i < ring.size(); ++i) {
         const Point2& p = ring[i];
         const Point2& q = ring[(i + 1) % ring.size()];
-        curves.emplace_back(SegmentTraits::Curve_2(p, q),
-                            CGAL::compare_xy(p, q) == CGAL::SMALLER ? mark : -mark);
+        segments.push_back(
+            {SegmentTraits::Curve_2(p, q), CGAL::compare_xy(p, q) == CGAL::SMALLER ? mark : -mark});
       }
     };
     for (const Polygon2* polygon : layers[k].polygons) {
@@ -93,11 +189,22 @@ std::unique_ptr<Arrangement> overlay(const std::vector<Layer>& layers) {
       for (const Ring2& hole : polygon->holes) add(hole);
     }
   }
+  std::vector<Traits::Curve_2> curves;
+  curves.reserve(segments.size());
+  for (std::size_t k = 0; k < segments.size(); ++k) curves.emplace_back(segments[k].segment, k);
   auto arrangement = std::make_unique<Arrangement>();
   CGAL::insert(*arrangement, curves.begin(), curves.end());
+  std::size_t id = 0;
+  for (auto v = arrangement->vertices_begin(); v != arrangement->vertices_end(); ++v)
+    v->set_data(id++);
+  id = 0;
+  for (auto f = arrangement->faces_begin(); f != arrangement->faces_end(); ++f) f->data().id = id++;
+  id = 0;
+  for (auto h = arrangement->halfedges_begin(); h != arrangement->halfedges_end(); ++h)
+    h->set_data(id++);
   using Face = Arrangement::Face_handle;
-  std::set<Face> reached{arrangement->unbounded_face()};
-  arrangement->unbounded_face()->set_data(0);
+  std::vector<bool> reached(arrangement->number_of_faces());
+  reached[arrangement->unbounded_face()->data().id] = true;
   std::vector<Face> queue{arrangement->unbounded_face()};
   while (!queue.empty()) {
     const Face face = queue.back();
@@ -106,23 +213,26 @@ std::unique_ptr<Arrangement> overlay(const std::vector<Layer>& layers) {
       auto halfedge = ccb;
       do {
         const Face other = halfedge->twin()->face();
-        if (!reached.insert(other).second) continue;
+        if (reached[other->data().id]) continue;
+        reached[other->data().id] = true;
         // face is on the halfedge's left: directed left to right, a mark k > 0 puts layer
         // k - 1 on face's side.
         const bool rightward = halfedge->direction() == CGAL::ARR_LEFT_TO_RIGHT;
-        long count = face->data();
-        for (const long mark : halfedge->curve().data()) {
+        long count = face->data().count;
+        for (const std::size_t segment : halfedge->curve().data()) {
+          const long mark = segments[segment].mark;
           const long weight = layers[static_cast<std::size_t>(std::labs(mark)) - 1].weight;
           count += (mark > 0) == rightward ? -weight : weight;
         }
-        other->set_data(count);
+        other->data().count = count;
         queue.push_back(other);
       } while (++halfedge != ccb);
     };
     if (!face->is_unbounded()) cross(face->outer_ccb());
     for (auto hole = face->inner_ccbs_begin(); hole != face->inner_ccbs_end(); ++hole) cross(*hole);
   }
-  return arrangement;
+  std::vector<Point2> points = exact_vertices(*arrangement, segments);
+  return {std::move(arrangement), std::move(points)};
 }
 
 // returns the polygons of the arrangement's faces by key (faces of key < 0 left out), read in
@@ -133,18 +243,15 @@ std::unique_ptr<Arrangement> overlay(const std::vector<Layer>& layers) {
 // are the polygons' outer boundaries, clockwise ones their holes, each in the polygon of the
 // face on its left.
 template <typename Key>
-std::map<std::ptrdiff_t, std::vector<Polygon2>> polygons_by_key(const Arrangement& arrangement,
+std::map<std::ptrdiff_t, std::vector<Polygon2>> polygons_by_key(const Overlay& overlay,
                                                                 const Key& key_of) {
+  const Arrangement& arrangement = *overlay.arrangement;
   using Face = Arrangement::Face_const_handle;
   using Halfedge = Arrangement::Halfedge_const_handle;
-  std::map<Face, std::size_t> index;
-  std::vector<std::ptrdiff_t> keys;
+  std::vector<std::ptrdiff_t> keys(arrangement.number_of_faces());  // by face id
   for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f)
-    if (key_of(f->data()) >= 0) {
-      index.emplace(f, keys.size());
-      keys.push_back(key_of(f->data()));
-    }
-  const auto key = [&](Face f) { return key_of(f->data()); };
+    keys[f->data().id] = key_of(f->data().count);
+  const auto key = [&](Face f) { return keys[f->data().id]; };
   std::vector<std::size_t> parent(keys.size());
   std::iota(parent.begin(), parent.end(), 0);
   const auto root = [&](std::size_t k) {
@@ -153,35 +260,36 @@ std::map<std::ptrdiff_t, std::vector<Polygon2>> polygons_by_key(const Arrangemen
   };
   for (auto e = arrangement.edges_begin(); e != arrangement.edges_end(); ++e) {
     const Face a = e->face(), b = e->twin()->face();
-    if (a != b && key(a) >= 0 && key(a) == key(b)) parent[root(index.at(a))] = root(index.at(b));
+    if (a != b && key(a) >= 0 && key(a) == key(b)) parent[root(a->data().id)] = root(b->data().id);
   }
   const auto boundary = [&](Halfedge h) {
     return key(h->face()) >= 0 && key(h->face()) != key(h->twin()->face());
   };
-  std::map<std::size_t, Polygon2> polygons;  // by the root of their faces
-  std::set<Halfedge> traced;
+  std::vector<Polygon2> polygons(keys.size());  // by the root of their faces
+  std::vector<bool> traced(arrangement.number_of_halfedges());
   for (auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h) {
-    if (!boundary(h) || traced.count(h)) continue;
+    if (!boundary(h) || traced[h->data()]) continue;
     Ring2 ring;
     Halfedge at = h;
     do {
-      traced.insert(at);
-      ring.push_back(at->source()->point());
+      traced[at->data()] = true;
+      ring.push_back(overlay.points[at->source()->data()]);
       Halfedge next = at->next();
       while (!boundary(next)) next = next->twin()->next();
       at = next;
     } while (at != Halfedge(h));
     Ring2 canonical = canonical_ring(ring);
     if (canonical.empty()) continue;
-    Polygon2& polygon = polygons[root(index.at(h->face()))];
+    Polygon2& polygon = polygons[root(h->face()->data().id)];
     if (CGAL::orientation_2(canonical.begin(), canonical.end(), Kernel()) == CGAL::COUNTERCLOCKWISE)
       polygon.outer = std::move(canonical);
     else
       polygon.holes.push_back(std::move(canonical));
   }
   std::map<std::ptrdiff_t, std::vector<Polygon2>> by_key;
-  for (auto& [component, polygon] : polygons)
-    if (!polygon.outer.empty()) by_key[keys[component]].push_back(std::move(polygon));
+  for (std::size_t component = 0; component < polygons.size(); ++component)
+    if (!polygons[component].outer.empty())
+      by_key[keys[component]].push_back(std::move(polygons[component]));
   return by_key;
 }
 
@@ -203,19 +311,19 @@ ClusterParts overlay_cluster(const std::vector<Piece>& cluster) {
   for (const Piece& piece : cluster) by_region[piece.region].polygons.push_back(piece.polygon);
   std::vector<Layer> layers;
   for (auto& entry : by_region) layers.push_back(std::move(entry.second));
-  const std::unique_ptr<Arrangement> all = overlay(layers);
+  const Overlay all = overlay(layers);
   for (auto& [count, polygons] : polygons_by_key(
-           *all, [](long data) { return data > 0 ? static_cast<std::ptrdiff_t>(data) : -1; }))
+           all, [](long data) { return data > 0 ? static_cast<std::ptrdiff_t>(data) : -1; }))
     parts.by_count[static_cast<std::size_t>(count)] = std::move(polygons);
-  parts.extent = std::move(polygons_by_key(*all, [](long data) { return data > 0 ? 0 : -1; })[0]);
+  parts.extent = std::move(polygons_by_key(all, [](long data) { return data > 0 ? 0 : -1; })[0]);
   return parts;
 }
 
 // returns the polygons of the faces of the overlay of layers whose count is count.
 Region2 region_counting(const std::vector<Layer>& layers, long count) {
-  const std::unique_ptr<Arrangement> all = overlay(layers);
+  const Overlay all = overlay(layers);
   return canonical_region(
-      std::move(polygons_by_key(*all, [count](long data) { return data == count ? 0 : -1; })[0]));
+      std::move(polygons_by_key(all, [count](long data) { return data == count ? 0 : -1; })[0]));
 }
 
 // returns window less the polygons of extents (disjoint): the faces of the window's and the

@@ -1,11 +1,13 @@
 // The overlay of many regions (region_overlay.h) against counting: at random rational
 // points, the part of the window that holds the point must carry the number of regions
-// that hold it (each tested on its own, exactly), and the parts must tile the window.
+// that hold it (each tested on its own, exactly), and the parts must tile the window; for
+// regions with integer corners and with rational ones.
 
 #include <boost/test/unit_test.hpp>
 
 #include <random>
 
+#include "penumbra/geometry/exact.h"
 #include "penumbra/shadow/region_overlay.h"
 #include "region_set.h"
 #include "shadow_support.h"
@@ -19,12 +21,12 @@ Ring2 square(int x0, int y0, int x1, int y1) {
   return {Point2(x0, y0), Point2(x1, y0), Point2(x1, y1), Point2(x0, y1)};
 }
 
-// returns a random triangle with integer corners in [0, 12]^2, counter-clockwise.
-Ring2 random_triangle(std::mt19937& random) {
-  std::uniform_int_distribution<int> coordinate(0, 12);
+// returns a random triangle with corners made by corner(random), counter-clockwise.
+template <typename Corner>
+Ring2 random_triangle(std::mt19937& random, const Corner& corner) {
   for (;;) {
     Ring2 ring;
-    for (int k = 0; k < 3; ++k) ring.emplace_back(coordinate(random), coordinate(random));
+    for (int k = 0; k < 3; ++k) ring.push_back(corner(random));
     const auto turn = CGAL::orientation(ring[0], ring[1], ring[2]);
     if (turn == CGAL::COLLINEAR) continue;
     if (turn == CGAL::CLOCKWISE) std::swap(ring[1], ring[2]);
@@ -32,25 +34,44 @@ Ring2 random_triangle(std::mt19937& random) {
   }
 }
 
-}  // namespace
+// integer corners in [0, 12]^2 (lazy points made from doubles): shared edges, shared
+// vertices and collinear overlaps are frequent.
+Point2 integer_corner(std::mt19937& random) {
+  std::uniform_int_distribution<int> coordinate(0, 12);
+  const int x = coordinate(random);
+  return Point2(x, coordinate(random));
+}
 
-BOOST_AUTO_TEST_SUITE(region_overlay)
+// corners p/q in [0, 12]^2 with q up to 97, their exact values stored (as the corners of
+// shadow polygons are): edges crossing at points of large denominators.
+Point2 rational_corner(std::mt19937& random) {
+  std::uniform_int_distribution<int> denominator(1, 97);
+  const auto coordinate = [&] {
+    const int q = denominator(random);
+    Rational x(std::uniform_int_distribution<int>(0, 12 * q)(random), q);
+    x.canonicalize();
+    return x;
+  };
+  Rational x = coordinate();
+  return from_exact<Point2>(RationalPoint2(x, coordinate()));
+}
 
-BOOST_AUTO_TEST_CASE(each_part_carries_the_number_of_regions_over_it) {
+// checks coverage against counting at random points, for regions that are unions of one to
+// three random triangles made by corner, less the window's hole.
+template <typename Corner>
+void check_counts(std::uint32_t seed, const Corner& corner) {
   // The window: [0, 12]^2 with the hole [5, 7]^2 (clockwise).
   Ring2 hole = square(5, 5, 7, 7);
   std::reverse(hole.begin(), hole.end());
   const Polygon2 window{canonical_ring(square(0, 0, 12, 12)), {canonical_ring(hole)}};
   const Region2 whole = canonical_region({window});
-  std::mt19937 random(20261202);
+  std::mt19937 random(seed);
   for (int trial = 0; trial < 12; ++trial) {
-    // Regions: unions of one to three random triangles, less the window's hole. Integer
-    // corners make shared edges, shared vertices and collinear overlaps frequent.
     std::vector<Region2> regions;
     const int count = 1 + trial % 7;
     for (int k = 0; k < count; ++k) {
       std::vector<Ring2> triangles;
-      for (int t = 0; t < 1 + k % 3; ++t) triangles.push_back(random_triangle(random));
+      for (int t = 0; t < 1 + k % 3; ++t) triangles.push_back(random_triangle(random, corner));
       regions.push_back(detail::unite_minus(triangles, {square(5, 5, 7, 7)}));
     }
     std::vector<const Region2*> pointers;
@@ -90,6 +111,21 @@ BOOST_AUTO_TEST_CASE(each_part_carries_the_number_of_regions_over_it) {
   }
 }
 
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(region_overlay)
+
+BOOST_AUTO_TEST_CASE(each_part_carries_the_number_of_regions_over_it) {
+  check_counts(20261202, integer_corner);
+}
+
+// The overlay computes the points where edges cross from integer lines through the edges'
+// ends (region_overlay.cpp, exact_vertices): with rational corners every such point has a
+// large denominator, and one wrong digit breaks the exact tiling or a count.
+BOOST_AUTO_TEST_CASE(parts_are_exact_where_edges_of_rational_corners_cross) {
+  check_counts(20261205, rational_corner);
+}
+
 BOOST_AUTO_TEST_CASE(no_regions_leave_the_window_whole_with_the_base_count) {
   const Polygon2 window{canonical_ring(square(0, 0, 3, 2)), {}};
   const std::vector<Coverage> parts = coverage(window, {}, 5);
@@ -107,8 +143,10 @@ BOOST_AUTO_TEST_CASE(an_intersection_holds_the_points_both_regions_hold) {
   std::mt19937 random(23);
   for (int trial = 0; trial < 10; ++trial) {
     std::vector<Ring2> first, second;
-    for (int t = 0; t < 1 + trial % 3; ++t) first.push_back(random_triangle(random));
-    for (int t = 0; t < 1 + (trial / 3) % 3; ++t) second.push_back(random_triangle(random));
+    for (int t = 0; t < 1 + trial % 3; ++t)
+      first.push_back(random_triangle(random, integer_corner));
+    for (int t = 0; t < 1 + (trial / 3) % 3; ++t)
+      second.push_back(random_triangle(random, integer_corner));
     const Region2 a = detail::unite_minus(first, {square(5, 5, 7, 7)});
     const Region2 b = detail::unite_minus(second);
     const Region2 both = intersection(a, b);

@@ -2,9 +2,15 @@
 // run): on a real model (the L-shaped courtyard mesh, whose faces are made of convex pieces)
 // the result read from the exact document has the same receiving faces, counts and exact
 // regions as the one computed, for every face and for a subset; a document without its exact
-// keys, or of other faces, is refused naming where.
+// keys, or of other faces, is refused naming where. The document written as it is made
+// (io::write_sun_hours_json) is the tree's text, and its points, rounded ahead across threads
+// on a face of many, are the exact points' roundings.
 
 #include <boost/test/unit_test.hpp>
+
+#include <gmpxx.h>
+
+#include <sstream>
 
 #include "penumbra/base/input_error.h"
 #include "penumbra/io/sun_hours_document.h"
@@ -20,11 +26,11 @@ namespace {
 struct Study {
   Scene scene = load_scene(test::fixture("scenes/mesh-courtyard.json"));
   studies::SunHoursPlan plan;
-  Study() {
+  explicit Study(const std::string& step = "1h") {
     studies::SunHoursRequest request;
     request.site = "51.5,-0.12";
     request.date = "2026-06-21";
-    request.step = "1h";
+    request.step = step;
     plan = studies::plan_sun_hours(scene, request);
   }
   studies::SunHoursResult run(const std::optional<std::vector<Receiver>>& receivers) const {
@@ -106,4 +112,52 @@ BOOST_AUTO_TEST_CASE(a_document_that_does_not_fit_is_refused_naming_where) {
   document = study.document(computed);
   document["faces"][0]["hours"][0]["polygons"][0]["exact"]["outer"][0][0] = "1/2x";
   BOOST_TEST(where(document) == "faces[0].hours[0].polygons[0].exact.outer");
+}
+
+BOOST_AUTO_TEST_CASE(the_document_written_as_it_is_made_is_the_formatted_tree) {
+  // At 10-minute steps the courtyard's ground lists more than 256 points, the fewest whose
+  // world doubles the writer computes ahead, across threads.
+  const Study study("10min");
+  const studies::SunHoursResult result = study.run(std::nullopt);
+  std::size_t most = 0;
+  for (const studies::FaceSunHours& face : result.hours) {
+    std::size_t listed = 0;
+    for (const Coverage& part : face.parts)
+      for (const Polygon2& polygon : part.region.polygons) {
+        listed += polygon.outer.size();
+        for (const Ring2& hole : polygon.holes) listed += hole.size();
+      }
+    most = std::max(most, listed);
+  }
+  BOOST_TEST_REQUIRE(most > 256u);
+  const io::SunHoursHeader header = io::sun_hours_header(study.scene, study.plan);
+  for (const bool exact : {false, true}) {
+    std::ostringstream written;
+    io::write_sun_hours_json(written, study.scene, result, header, exact);
+    BOOST_TEST(written.str() ==
+               io::format_json(io::sun_hours_json(study.scene, result, header, exact)));
+  }
+
+  // Every printed coordinate is its exact value (the "exact" rationals, which are converted
+  // one by one) rounded toward zero, as the document's doubles are.
+  const nlohmann::json document = nlohmann::json::parse([&] {
+    std::ostringstream written;
+    io::write_sun_hours_json(written, study.scene, result, header, true);
+    return written.str();
+  }());
+  std::size_t compared = 0;
+  for (const nlohmann::json& face : document.at("faces"))
+    for (const nlohmann::json& part : face.at("hours"))
+      for (const nlohmann::json& polygon : part.at("polygons")) {
+        const nlohmann::json& printed = polygon.at("outer");
+        const nlohmann::json& rational = polygon.at("exact").at("outer");
+        BOOST_TEST_REQUIRE(printed.size() == rational.size());
+        for (std::size_t k = 0; k < printed.size(); ++k)
+          for (std::size_t i = 0; i < 3; ++i, ++compared) {
+            mpq_class x(rational[k][i].get<std::string>());
+            x.canonicalize();
+            BOOST_TEST(printed[k][i].get<double>() == x.get_d() + 0.0);
+          }
+      }
+  BOOST_TEST(compared > 3 * 256u);
 }

@@ -32,6 +32,13 @@ Lazy from_exact(Value&& value) {
   return Lazy(typename Lazy::Rep(std::forward<Value>(value)));
 }
 
+// returns the representation behind an Epeck object.
+template <class Lazy>
+const typename Lazy::Self_rep* lazy_rep(const Lazy& x) {
+  return static_cast<const typename Lazy::Self_rep*>(
+      static_cast<const CGAL::Rep*>(x.for_compact_container()));
+}
+
 // returns CGAL::exact(x), without the system call CGAL makes on the first exact() of each
 // object. Lazy_rep::exact() runs std::call_once even when the value is already stored (as
 // from_exact and exact_number store it at construction), and glibc's first run of a
@@ -41,11 +48,16 @@ Lazy from_exact(Value&& value) {
 // reads it); an object with no exact value yet takes CGAL's path. The same value either way.
 template <class Lazy>
 auto exact_value(const Lazy& x) -> decltype(CGAL::exact(x)) {
-  const auto* rep = static_cast<const typename Lazy::Self_rep*>(
-      static_cast<const CGAL::Rep*>(x.for_compact_container()));
+  const auto* rep = lazy_rep(x);
   if (rep->is_lazy()) return CGAL::exact(x);
   std::atomic_thread_fence(std::memory_order_acquire);
   return rep->exact_unsafe();
+}
+
+// returns whether x's exact value is stored, so that exact_value reads it without computing.
+template <class Lazy>
+bool has_exact_value(const Lazy& x) {
+  return !lazy_rep(x)->is_lazy();
 }
 
 // returns the Epeck number whose exact value is value.

@@ -6,6 +6,7 @@
 // With exact, every coordinate also appears as "p/q" rationals under "exact" keys.
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -90,18 +91,19 @@ void stream_shadow_document(const Scene& scene, const ShadowResult& result,
                             const ShadowJsonOptions& options,
                             const std::vector<ShadowDocumentSink*>& sinks);
 
+class FacesDocumentWriter;
+
 // Writes the document as format_json would, block by block.
 class ShadowJsonWriter : public ShadowDocumentSink {
  public:
-  explicit ShadowJsonWriter(std::ostream& out) : out_(out) {}
+  explicit ShadowJsonWriter(std::ostream& out);
+  ~ShadowJsonWriter() override;
   void begin(const nlohmann::json& header, std::size_t faces) override;
   void faces(const ShadowFaceBlock& block) override;
   void end() override;
 
  private:
-  std::ostream& out_;
-  nlohmann::json after_faces_;  // the header's keys that sort after "faces"
-  std::size_t written_ = 0, faces_ = 0;
+  std::unique_ptr<FacesDocumentWriter> writer_;
 };
 
 // returns the rings of a face entry's "boundary": the ring of an object's face, or the outer

@@ -36,6 +36,13 @@ SunHoursHeader sun_hours_header(const Scene& scene, const studies::SunHoursPlan&
 nlohmann::json sun_hours_json(const Scene& scene, const studies::SunHoursResult& result,
                               const SunHoursHeader& header, bool exact);
 
+// writes the document of sun_hours_json as format_json would lay it out, without building
+// it: the faces' entries made as text across threads, a block at a time (a city's document
+// runs to a gigabyte).
+void write_sun_hours_json(std::ostream& out, const Scene& scene,
+                          const studies::SunHoursResult& result, const SunHoursHeader& header,
+                          bool exact);
+
 // rebuilds the result that an exact document (sun_hours_json with exact) describes: the
 // inverse of sun_hours_json on its exact keys, for the merged document of a distributed run
 // (penumbra.dask), so that every output is then written as from one process. The steps come
