@@ -11,10 +11,6 @@ namespace {
 using nlohmann::json;
 using studies::SunHoursResult;
 
-// the fewest points listed in a face's parts for which their world doubles are computed
-// ahead.
-constexpr std::size_t kRoundedAhead = 256;
-
 // The entry of "faces" for receiver r; members in key order.
 void emit_face(JsonEmitter& out, const Scene& scene, const SunHoursResult& result, std::size_t r,
                bool exact) {
@@ -22,17 +18,9 @@ void emit_face(JsonEmitter& out, const Scene& scene, const SunHoursResult& resul
   FaceOutput output = plain_output(face);
   // A ground under a city holds millions of points, each in the rings of the parts on
   // either side: their world doubles are computed once, ahead, across threads.
-  std::size_t listed = 0;
-  for (const Coverage& part : result.hours[r].parts)
-    for (const Polygon2& polygon : part.region.polygons) {
-      listed += polygon.outer.size();
-      for (const Ring2& hole : polygon.holes) listed += hole.size();
-    }
-  if (listed >= kRoundedAhead) {
-    std::vector<const Point2*> points;
-    for (const Coverage& part : result.hours[r].parts) add_points(output, points, part.region);
-    round_points(output, points);
-  }
+  std::vector<const Point2*> points;
+  for (const Coverage& part : result.hours[r].parts) add_points(output, points, part.region);
+  round_points(output, points);
   emit_face_entry(out, output, exact, [&] {
     out.key("hours");
     out.begin_array();

@@ -102,27 +102,17 @@ std::optional<RationalPoint2> crossing(const IntegerLine& l, const IntegerLine& 
   return RationalPoint2(x, y);
 }
 
-// A segment of a layer's ring and the layer's mark on it: +k when layer k - 1 lies on the
-// left of the segment directed from its lexicographically smaller end to its larger one,
-// -k when on its right.
-struct MarkedSegment {
-  SegmentTraits::Curve_2 segment;
-  long mark;
-};
-
 // returns the points of the arrangement's vertices by vertex id, each with its exact value:
 // a vertex where segments cross, whose point CGAL made as a lazy intersection, gets the same
 // point computed from the integer lines of two segments through it (the exact values of
 // the crossings were a third of the time of a ground's overlay); the segments' ends are
 // kept as they are. Across threads.
 std::vector<Point2> exact_vertices(const Arrangement& arrangement,
-                                   const std::vector<MarkedSegment>& segments) {
+                                   const std::vector<Traits::Curve_2>& segments) {
   std::vector<IntegerLine> lines(segments.size());
   for_each_index(
       segments.size(), segments.size() > 256,
-      [&](std::size_t k) {
-        lines[k] = integer_line(segments[k].segment.source(), segments[k].segment.target());
-      },
+      [&](std::size_t k) { lines[k] = integer_line(segments[k].source(), segments[k].target()); },
       64);
   std::vector<Arrangement::Vertex_const_handle> vertices;
   for (auto v = arrangement.vertices_begin(); v != arrangement.vertices_end(); ++v)
@@ -173,15 +163,19 @@ struct Overlay {
 // from a face into its neighbour subtracts the weight of each layer the edge bounds on the
 // face's side and adds that of each it bounds on the neighbour's.
 Overlay overlay(const std::vector<Layer>& layers) {
-  std::vector<MarkedSegment> segments;
+  // The rings' segments, each carrying its index, and the marks of their layers: +k when
+  // layer k - 1 lies on the left of the segment directed from its lexicographically smaller
+  // end to its larger one, -k when on its right.
+  std::vector<Traits::Curve_2> segments;
+  std::vector<long> marks;
   for (std::size_t k = 0; k < layers.size(); ++k) {
     const long mark = static_cast<long>(k) + 1;
     const auto add = [&](const Ring2& ring) {
       for (std::size_t i = 0; i < ring.size(); ++i) {
         const Point2& p = ring[i];
         const Point2& q = ring[(i + 1) % ring.size()];
-        segments.push_back(
-            {SegmentTraits::Curve_2(p, q), CGAL::compare_xy(p, q) == CGAL::SMALLER ? mark : -mark});
+        segments.emplace_back(SegmentTraits::Curve_2(p, q), segments.size());
+        marks.push_back(CGAL::compare_xy(p, q) == CGAL::SMALLER ? mark : -mark);
       }
     };
     for (const Polygon2* polygon : layers[k].polygons) {
@@ -189,11 +183,8 @@ Overlay overlay(const std::vector<Layer>& layers) {
       for (const Ring2& hole : polygon->holes) add(hole);
     }
   }
-  std::vector<Traits::Curve_2> curves;
-  curves.reserve(segments.size());
-  for (std::size_t k = 0; k < segments.size(); ++k) curves.emplace_back(segments[k].segment, k);
   auto arrangement = std::make_unique<Arrangement>();
-  CGAL::insert(*arrangement, curves.begin(), curves.end());
+  CGAL::insert(*arrangement, segments.begin(), segments.end());
   std::size_t id = 0;
   for (auto v = arrangement->vertices_begin(); v != arrangement->vertices_end(); ++v)
     v->set_data(id++);
@@ -220,7 +211,7 @@ Overlay overlay(const std::vector<Layer>& layers) {
         const bool rightward = halfedge->direction() == CGAL::ARR_LEFT_TO_RIGHT;
         long count = face->data().count;
         for (const std::size_t segment : halfedge->curve().data()) {
-          const long mark = segments[segment].mark;
+          const long mark = marks[segment];
           const long weight = layers[static_cast<std::size_t>(std::labs(mark)) - 1].weight;
           count += (mark > 0) == rightward ? -weight : weight;
         }

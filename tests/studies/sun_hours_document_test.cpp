@@ -3,8 +3,8 @@
 // the result read from the exact document has the same receiving faces, counts and exact
 // regions as the one computed, for every face and for a subset; a document without its exact
 // keys, or of other faces, is refused naming where. The document written as it is made
-// (io::write_sun_hours_json) is the tree's text, and its points, rounded ahead across threads
-// on a face of many, are the exact points' roundings.
+// (io::write_sun_hours_json) is the tree's text, and its points, rounded ahead (across
+// threads on a face of many), are the exact points' roundings.
 
 #include <boost/test/unit_test.hpp>
 
@@ -115,8 +115,8 @@ BOOST_AUTO_TEST_CASE(a_document_that_does_not_fit_is_refused_naming_where) {
 }
 
 BOOST_AUTO_TEST_CASE(the_document_written_as_it_is_made_is_the_formatted_tree) {
-  // At 10-minute steps the courtyard's ground lists more than 256 points, the fewest whose
-  // world doubles the writer computes ahead, across threads.
+  // At 10-minute steps the courtyard's ground lists more than 256 points, so that the
+  // writer computes their world doubles ahead across threads.
   const Study study("10min");
   const studies::SunHoursResult result = study.run(std::nullopt);
   std::size_t most = 0;
