@@ -7,6 +7,7 @@
 
 #include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/interval.h"
+#include "rational_enclosure.h"
 
 namespace penumbra::detail {
 namespace {
@@ -36,9 +37,7 @@ Rational parameter_through(const RationalPoint3& p, const RationalPoint3& x,
   return -(CGAL::cross_product(w, q1 - p) * m) / (m * m);
 }
 
-Interval enclosure(const Rational& x) {
-  return Interval(CGAL::to_interval(x));
-}
+using detail::enclosure;  // of a rational (rational_enclosure.h), beside that of a point
 
 IntervalPoint enclosure(const RationalPoint3& p) {
   return {enclosure(p.x()), enclosure(p.y()), enclosure(p.z())};

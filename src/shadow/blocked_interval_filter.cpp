@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <set>
 
+#include "rational_enclosure.h"
+
 namespace penumbra::detail {
 namespace {
 
@@ -37,10 +39,6 @@ void add(std::vector<int>& on, int plane) {
   if (at == on.end() || *at != plane) on.insert(at, plane);
 }
 
-Interval rational_interval(const Rational& x) {
-  return Interval(CGAL::to_interval(x));
-}
-
 // the source parameter where the line from p through x meets the line q1 + t d.
 std::optional<Interval> parameter_through(const IntervalPoint& p, const IntervalPoint& x,
                                           const IntervalPoint& q1, const IntervalPoint& d) {
@@ -61,15 +59,15 @@ std::optional<bool> less(const Interval& a, const Interval& b) {
 }  // namespace
 
 IntervalPoint interval_point(const RationalPoint3& p) {
-  return {rational_interval(p.x()), rational_interval(p.y()), rational_interval(p.z())};
+  return {enclosure(p.x()), enclosure(p.y()), enclosure(p.z())};
 }
 
 IntervalSolid interval_solid(const RationalSolid& solid) {
   IntervalSolid result;
   const std::size_t n = solid.planes.size();
   for (const RationalPlane3& plane : solid.planes)
-    result.planes.push_back({rational_interval(plane.a()), rational_interval(plane.b()),
-                             rational_interval(plane.c()), rational_interval(plane.d())});
+    result.planes.push_back(
+        {enclosure(plane.a()), enclosure(plane.b()), enclosure(plane.c()), enclosure(plane.d())});
   // Geometric ids: a plane equal to an earlier one (either orientation) shares its id.
   for (std::size_t k = 0; k < n; ++k) {
     int id = static_cast<int>(k);

@@ -2,14 +2,9 @@
 
 #include <algorithm>
 
+#include "rational_enclosure.h"
+
 namespace penumbra::detail {
-namespace {
-
-Interval enclosure(const Rational& x) {
-  return Interval(CGAL::to_interval(x));
-}
-
-}  // namespace
 
 Probe::Probe(const RationalPoint2& p) : point(p), at{enclosure(p.x()), enclosure(p.y())} {}
 

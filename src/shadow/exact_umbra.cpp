@@ -37,6 +37,7 @@
 #include "penumbra/geometry/interval.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/linear_volumes.h"
+#include "rational_enclosure.h"
 #include "receiver_clip.h"
 #include "region_set.h"
 
@@ -313,6 +314,10 @@ class Sweep {
     collect_lines(occluders);
   }
 
+  // false when the group's occluders surely hide the source together nowhere on the face
+  // (W has no interior: may_hide_together), so no cell of its sweep is a joint part.
+  bool may_be_joint() const { return !end_shadows_[0].empty(); }
+
   void run(Sector& sector) {
     const Pencil& pencil = sector.pencil;
     std::vector<Rational> seams{pencil.s_low(), pencil.s_high()};
@@ -444,10 +449,10 @@ class Sweep {
         known.roles.push_back({ring, in_w});
         return;
       }
-    lines_.push_back({unit,
-                      {{ring, in_w}},
-                      {Interval(CGAL::to_interval(unit.d)), Interval(CGAL::to_interval(unit.e)),
-                       Interval(CGAL::to_interval(unit.f))}});
+    lines_.push_back(
+        {unit,
+         {{ring, in_w}},
+         {detail::enclosure(unit.d), detail::enclosure(unit.e), detail::enclosure(unit.f)}});
   }
 
   void collect_lines(const std::vector<UmbraOccluder>& occluders) {
@@ -515,8 +520,8 @@ class Sweep {
   // making the point: nullopt when a sign or comparison is not certified.
   std::optional<Label> maybe_label(const Pencil& pencil, const Rational& s, const Rational& r) {
     CGAL::Protect_FPU_rounding<true> upward;
-    const std::array<Interval, 2> at = detail::interval_point(
-        pencil, Interval(CGAL::to_interval(s)), Interval(CGAL::to_interval(r)));
+    const std::array<Interval, 2> at =
+        detail::interval_point(pencil, detail::enclosure(s), detail::enclosure(r));
     const auto in_face = impl_.face.maybe_contains(at);
     if (!in_face) return std::nullopt;
     if (!*in_face) return kLit;
@@ -614,7 +619,7 @@ class Sweep {
   // (the values are not needed): from the interval filter when it can, else exact.
   std::vector<BlockedInterval> ends(const Probe& p) const {
     const RationalPoint3 x = world(p.point);
-    const IntervalPoint at = detail::interval_point(x);  // (to_interval rounds outward itself)
+    const IntervalPoint at = detail::interval_point(x);  // (enclosures are outward in any rounding)
     std::vector<BlockedInterval> result(prepared_.size());
     for (std::size_t k = 0; k < prepared_.size(); ++k) {
       if (!shadows_[k].contains(p)) continue;
@@ -718,7 +723,7 @@ class Sweep {
     const Rational middle = detail::simplest_between(sa, sb);
     // The lines that matter on this slab, in increasing r.
     std::vector<std::pair<Rational, int>> ordered;
-    const Interval enclosed_middle(CGAL::to_interval(middle));
+    const Interval enclosed_middle = detail::enclosure(middle);
     for (std::size_t k = 0; k < line_curves.size(); ++k) {
       if (surely_irrelevant(pencil, lines_[line_curves[k]], line_enclosures[k], enclosed_middle))
         continue;
@@ -1228,80 +1233,98 @@ bool in_cells(const SweptPart& impl, const RationalPoint2& p, char kind) {
   return false;
 }
 
-// sweeps the occluders (one touching group) on face (region: its pieces and rings) under the
-// visible source ab.
-std::shared_ptr<const SweptPart> sweep_part(const Face& face, const detail::FaceRegion& region,
-                                            const RationalPoint3& a, const RationalPoint3& b,
-                                            const std::vector<UmbraOccluder>& occluders,
-                                            double tolerance) {
-  auto impl = std::make_shared<SweptPart>();
-  impl->face = region;
-  impl->frame = face.frame;
-  const RationalPlane3 plane = exact_value(face.plane);
-  const Rational f1 = plane_value(plane, a), f2 = plane_value(plane, b);
-  const RationalVector2 axes[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-  if (f1 != f2) {
-    // The source's line meets the face's plane at x0: four quadrants of directions.
-    impl->centre = face.frame.to_frame(a + (f1 / (f1 - f2)) * (b - a));
-    for (int k = 0; k < 4; ++k)
-      impl->sectors.push_back(
-          {Pencil::cone(*impl->centre, axes[k], axes[(k + 1) % 4]), {}, {}, {}});
-  } else {
-    // Parallel to the face: lines along the source's direction, across the face.
-    const RationalVector3 d = b - a;
-    const RationalVector3 u = exact_value(face.frame.u()), v = exact_value(face.frame.v());
-    const RationalVector2 delta((d * u) / (u * u), (d * v) / (v * v));
-    const Pencil probe = Pencil::parallel(delta, 0, 0);
-    std::optional<Rational> low, high;
-    for (const RationalPoint2& p : impl->face.points()) {
-      const Rational s = probe.coordinates(p)->first;
-      if (!low || s < *low) low = s;
-      if (!high || s > *high) high = s;
-    }
-    impl->sectors.push_back({Pencil::parallel(delta, *low, *high), {}, {}, {}});
+// The sweep of one touching group of occluders on face (region: its pieces and rings) under
+// the visible source ab, set up (its lines, and whether W may have interior) before it runs:
+// a face none of whose groups may hide the source together need not be swept (joint_umbra).
+class GroupSweep {
+ public:
+  GroupSweep(const Face& face, const detail::FaceRegion& region, const RationalPoint3& a,
+             const RationalPoint3& b, const std::vector<UmbraOccluder>& occluders)
+      : face_(face), a_(a), b_(b), impl_(std::make_shared<SweptPart>()) {
+    impl_->face = region;
+    impl_->frame = face.frame;
+    sweep_ = std::make_unique<Sweep>(*impl_, face, a, b, occluders);
   }
-  // A quadrant beyond the face's extent along either of its axes holds none of the face:
-  // it is not swept (no columns: no cell and no boundary there).
-  std::vector<bool> meets(impl->sectors.size(), true);
-  if (impl->centre) {
-    std::array<std::optional<Rational>, 4> extent;  // the largest (p - x0) . axis
-    for (const RationalPoint2& p : impl->face.points())
-      for (int k = 0; k < 4; ++k) {
-        const Rational along = (p - *impl->centre) * axes[k];
-        if (!extent[k] || along > *extent[k]) extent[k] = along;
+
+  bool may_be_joint() const { return sweep_->may_be_joint(); }
+
+  // sweeps the group: its cells, boundary, areas and polygons.
+  std::shared_ptr<const SweptPart> run(double tolerance) {
+    const Face& face = face_;
+    const RationalPoint3 &a = a_, &b = b_;
+    const auto& impl = impl_;
+    const RationalPlane3 plane = exact_value(face.plane);
+    const Rational f1 = plane_value(plane, a), f2 = plane_value(plane, b);
+    const RationalVector2 axes[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    if (f1 != f2) {
+      // The source's line meets the face's plane at x0: four quadrants of directions.
+      impl->centre = face.frame.to_frame(a + (f1 / (f1 - f2)) * (b - a));
+      for (int k = 0; k < 4; ++k)
+        impl->sectors.push_back(
+            {Pencil::cone(*impl->centre, axes[k], axes[(k + 1) % 4]), {}, {}, {}});
+    } else {
+      // Parallel to the face: lines along the source's direction, across the face.
+      const RationalVector3 d = b - a;
+      const RationalVector3 u = exact_value(face.frame.u()), v = exact_value(face.frame.v());
+      const RationalVector2 delta((d * u) / (u * u), (d * v) / (v * v));
+      const Pencil probe = Pencil::parallel(delta, 0, 0);
+      std::optional<Rational> low, high;
+      for (const RationalPoint2& p : impl->face.points()) {
+        const Rational s = probe.coordinates(p)->first;
+        if (!low || s < *low) low = s;
+        if (!high || s > *high) high = s;
       }
-    for (int k = 0; k < 4; ++k)
-      meets[k] = extent[k] && !CGAL::is_negative(*extent[k]) && extent[(k + 1) % 4] &&
-                 !CGAL::is_negative(*extent[(k + 1) % 4]);
+      impl->sectors.push_back({Pencil::parallel(delta, *low, *high), {}, {}, {}});
+    }
+    // A quadrant beyond the face's extent along either of its axes holds none of the face:
+    // it is not swept (no columns: no cell and no boundary there).
+    std::vector<bool> meets(impl->sectors.size(), true);
+    if (impl->centre) {
+      std::array<std::optional<Rational>, 4> extent;  // the largest (p - x0) . axis
+      for (const RationalPoint2& p : impl->face.points())
+        for (int k = 0; k < 4; ++k) {
+          const Rational along = (p - *impl->centre) * axes[k];
+          if (!extent[k] || along > *extent[k]) extent[k] = along;
+        }
+      for (int k = 0; k < 4; ++k)
+        meets[k] = extent[k] && !CGAL::is_negative(*extent[k]) && extent[(k + 1) % 4] &&
+                   !CGAL::is_negative(*extent[(k + 1) % 4]);
+    }
+    for (std::size_t k = 0; k < impl->sectors.size(); ++k)
+      if (meets[k]) sweep_->run(impl->sectors[k]);
+    if (impl->centre && impl->face.contains(*impl->centre)) {
+      for (const Sector& sector : impl->sectors)
+        for (const Column& column : sector.columns)
+          impl->centre_label |= column.labels.front() == kUmbra;
+    }
+    const std::size_t n = impl->sectors.size();
+    std::vector<BoundaryPiece> umbra_pieces, penumbra_pieces;
+    for (std::size_t k = 0; k < n; ++k) {
+      const Sector* next = n == 4 ? &impl->sectors[(k + 1) % n] : nullptr;
+      const double scale = CGAL::to_double(face.area);
+      trace_boundary(*impl, static_cast<int>(k), tolerance, next, kUmbra, umbra_pieces);
+      trace_boundary(*impl, static_cast<int>(k), tolerance, next, kPenumbra, penumbra_pieces);
+      impl->area += sector_area(*impl, impl->sectors[k], scale, kUmbra);
+      impl->penumbra_area += sector_area(*impl, impl->sectors[k], scale, kPenumbra);
+    }
+    for (const BoundaryPiece& piece : umbra_pieces) impl->boundary.push_back(piece.arc);
+    for (const BoundaryPiece& piece : penumbra_pieces) impl->penumbra_boundary.push_back(piece.arc);
+    double size = 0;  // the face's extent in frame units, for the chaining's candidates
+    for (const RationalPoint2& p : impl->face.points())
+      size = std::max({size, std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y()))});
+    std::tie(impl->umbra_polygons, impl->umbra_pieces) =
+        chain(*impl, std::move(umbra_pieces), size);
+    std::tie(impl->penumbra_polygons, impl->penumbra_pieces) =
+        chain(*impl, std::move(penumbra_pieces), size);
+    return impl;
   }
-  Sweep sweep(*impl, face, a, b, occluders);
-  for (std::size_t k = 0; k < impl->sectors.size(); ++k)
-    if (meets[k]) sweep.run(impl->sectors[k]);
-  if (impl->centre && impl->face.contains(*impl->centre)) {
-    for (const Sector& sector : impl->sectors)
-      for (const Column& column : sector.columns)
-        impl->centre_label |= column.labels.front() == kUmbra;
-  }
-  const std::size_t n = impl->sectors.size();
-  std::vector<BoundaryPiece> umbra_pieces, penumbra_pieces;
-  for (std::size_t k = 0; k < n; ++k) {
-    const Sector* next = n == 4 ? &impl->sectors[(k + 1) % n] : nullptr;
-    const double scale = CGAL::to_double(face.area);
-    trace_boundary(*impl, static_cast<int>(k), tolerance, next, kUmbra, umbra_pieces);
-    trace_boundary(*impl, static_cast<int>(k), tolerance, next, kPenumbra, penumbra_pieces);
-    impl->area += sector_area(*impl, impl->sectors[k], scale, kUmbra);
-    impl->penumbra_area += sector_area(*impl, impl->sectors[k], scale, kPenumbra);
-  }
-  for (const BoundaryPiece& piece : umbra_pieces) impl->boundary.push_back(piece.arc);
-  for (const BoundaryPiece& piece : penumbra_pieces) impl->penumbra_boundary.push_back(piece.arc);
-  double size = 0;  // the face's extent in frame units, for the chaining's candidates
-  for (const RationalPoint2& p : impl->face.points())
-    size = std::max({size, std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y()))});
-  std::tie(impl->umbra_polygons, impl->umbra_pieces) = chain(*impl, std::move(umbra_pieces), size);
-  std::tie(impl->penumbra_polygons, impl->penumbra_pieces) =
-      chain(*impl, std::move(penumbra_pieces), size);
-  return impl;
-}
+
+ private:
+  const Face& face_;
+  RationalPoint3 a_, b_;
+  std::shared_ptr<SweptPart> impl_;
+  std::unique_ptr<Sweep> sweep_;
+};
 
 }  // namespace
 
@@ -1402,9 +1425,14 @@ ExactUmbra exact_umbra(const Face& face, const Point3& q1, const Point3& q2,
   return exact_umbra(face, {face.ring}, {face.ring}, q1, q2, occluders, tolerance);
 }
 
-ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
-                       const std::vector<Ring2>& boundary, const Point3& q1, const Point3& q2,
-                       const std::vector<UmbraOccluder>& occluders, double tolerance) {
+namespace {
+
+// exact_umbra, or when only_joint, nullopt where no group of occluders may hide the source
+// together (no sweep is run then).
+std::optional<ExactUmbra> umbra_of(const Face& face, const std::vector<Ring2>& pieces,
+                                   const std::vector<Ring2>& boundary, const Point3& q1,
+                                   const Point3& q2, const std::vector<UmbraOccluder>& occluders,
+                                   double tolerance, bool only_joint) {
   const auto rational_ring = [](const Ring2& ring) {
     std::vector<RationalPoint2> points;
     for (const Point2& p : ring) points.push_back(rational_point(p));
@@ -1417,6 +1445,7 @@ ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
   const detail::FaceRegion region(std::move(convex), std::move(rings));
   const auto source = visible_source(face, q1, q2);
   if (!source) {
+    if (only_joint) return std::nullopt;  // the whole face, no joint part
     auto whole = std::make_shared<SweptPart>();
     whole->whole = true;
     whole->face = region;
@@ -1430,15 +1459,34 @@ ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
   // touching group is swept on its own (in parallel), and none sweeps the others' lines.
   std::vector<Ring2> shadows;
   for (const UmbraOccluder& occluder : occluders) shadows.push_back(occluder.shadow);
-  const auto groups = detail::touching_groups(shadows);
-  std::vector<std::shared_ptr<const SweptPart>> parts(groups.size());
+  auto groups = detail::touching_groups(shadows);
+  if (groups.empty()) groups.emplace_back();  // no occluder: the face alone
+  std::vector<std::unique_ptr<GroupSweep>> sweeps(groups.size());
   for_each_index(groups.size(), true, [&](std::size_t g) {
     std::vector<UmbraOccluder> group;
     for (std::size_t k : groups[g]) group.push_back(occluders[k]);
-    parts[g] = sweep_part(face, region, a, b, group, tolerance);
+    sweeps[g] = std::make_unique<GroupSweep>(face, region, a, b, group);
   });
-  if (parts.empty()) parts.push_back(sweep_part(face, region, a, b, {}, tolerance));
+  if (only_joint && std::none_of(sweeps.begin(), sweeps.end(),
+                                 [](const auto& sweep) { return sweep->may_be_joint(); }))
+    return std::nullopt;
+  std::vector<std::shared_ptr<const SweptPart>> parts(groups.size());
+  for_each_index(groups.size(), true, [&](std::size_t g) { parts[g] = sweeps[g]->run(tolerance); });
   return ExactUmbra(std::make_shared<const ExactUmbra::Impl>(std::move(parts)));
+}
+
+}  // namespace
+
+ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
+                       const std::vector<Ring2>& boundary, const Point3& q1, const Point3& q2,
+                       const std::vector<UmbraOccluder>& occluders, double tolerance) {
+  return *umbra_of(face, pieces, boundary, q1, q2, occluders, tolerance, false);
+}
+
+std::optional<ExactUmbra> joint_umbra(const Face& face, const Point3& q1, const Point3& q2,
+                                      const std::vector<UmbraOccluder>& occluders,
+                                      double tolerance) {
+  return umbra_of(face, {face.ring}, {face.ring}, q1, q2, occluders, tolerance, true);
 }
 
 }  // namespace penumbra

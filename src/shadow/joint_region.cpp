@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "rational_enclosure.h"
+
 namespace penumbra::detail {
 namespace {
 
@@ -31,32 +33,60 @@ Polygon with_interior(Polygon polygon) {
   return polygon;
 }
 
-// clips the polygon to the closed half-plane f <= 0 (Sutherland-Hodgman, exact; the signs
-// at the vertices certified by f's interval filter when it can).
-Polygon clip_below(const Polygon& polygon, const FilteredAffine& f) {
+// The parts of a convex polygon with interior on either side of a line: each has interior,
+// or is empty.
+struct Sides {
+  Polygon below, above;  // f <= 0, f >= 0
+};
+
+// cuts the polygon (convex, with interior) by the line f = 0 (Sutherland-Hodgman, exact; the
+// signs at the vertices certified by f's interval filter when it can), making the part above
+// only when asked. A side the line does not enter is the polygon itself, moved, with no
+// arithmetic; a side it enters is checked for interior.
+Sides cut(Polygon polygon, const FilteredAffine& f, bool above_too) {
   const std::size_t n = polygon.size();
   std::vector<CGAL::Sign> signs(n);
-  for (std::size_t k = 0; k < n; ++k) signs[k] = f.sign(Probe(polygon[k]));
-  Polygon result;
+  bool positive = false, negative = false;
+  for (std::size_t k = 0; k < n; ++k) {
+    signs[k] = f.sign(Probe(polygon[k]));
+    positive = positive || signs[k] == CGAL::POSITIVE;
+    negative = negative || signs[k] == CGAL::NEGATIVE;
+  }
+  Sides sides;
+  if (!positive) {  // wholly below (touching the line at most)
+    sides.below = std::move(polygon);
+    return sides;
+  }
+  if (!negative) {
+    if (above_too) sides.above = std::move(polygon);
+    return sides;
+  }
   for (std::size_t k = 0; k < n; ++k) {
     const RationalPoint2& p = polygon[k];
-    const RationalPoint2& q = polygon[(k + 1) % n];
-    if (signs[k] != CGAL::POSITIVE) result.push_back(p);
-    if (signs[k] * signs[(k + 1) % n] < 0) {  // the edge crosses the line
+    const std::size_t next = (k + 1) % n;
+    if (signs[k] != CGAL::POSITIVE) sides.below.push_back(p);
+    if (above_too && signs[k] != CGAL::NEGATIVE) sides.above.push_back(p);
+    if (signs[k] * signs[next] < 0) {  // the edge crosses the line
+      const RationalPoint2& q = polygon[next];
       const Rational fp = f.exact()(p), fq = f.exact()(q);
-      result.push_back(p + (fp / (fp - fq)) * (q - p));
+      const RationalPoint2 x = p + (fp / (fp - fq)) * (q - p);
+      if (above_too) sides.above.push_back(x);
+      sides.below.push_back(x);
     }
   }
-  return result;
+  sides.below = with_interior(std::move(sides.below));
+  if (above_too) sides.above = with_interior(std::move(sides.above));
+  return sides;
 }
 
-// the polygon clipped to every function's closed half-plane; empty when it has no interior.
+// the polygon (convex, with interior) clipped to every function's closed half-plane; empty
+// when it has no interior.
 Polygon clip_to(Polygon polygon, const EndShadow& volume) {
   for (const FilteredAffine& f : volume) {
-    polygon = clip_below(polygon, f);
-    if (polygon.size() < 3) return {};
+    polygon = cut(std::move(polygon), f, false).below;
+    if (polygon.empty()) return {};
   }
-  return with_interior(std::move(polygon));
+  return polygon;
 }
 
 // The enclosing box of a polygon's points (outward rounded): polygons whose boxes are apart
@@ -68,11 +98,10 @@ struct Box {
 Box box_of(const Polygon& points) {
   Box box;
   for (std::size_t k = 0; k < points.size(); ++k) {
-    const std::pair<double, double> c[2] = {CGAL::to_interval(points[k].x()),
-                                            CGAL::to_interval(points[k].y())};
+    const Interval c[2] = {enclosure(points[k].x()), enclosure(points[k].y())};
     for (int i = 0; i < 2; ++i) {
-      box.low[i] = k == 0 ? c[i].first : std::min(box.low[i], c[i].first);
-      box.high[i] = k == 0 ? c[i].second : std::max(box.high[i], c[i].second);
+      box.low[i] = k == 0 ? c[i].inf() : std::min(box.low[i], c[i].inf());
+      box.high[i] = k == 0 ? c[i].sup() : std::max(box.high[i], c[i].sup());
     }
   }
   return box;
@@ -101,9 +130,10 @@ bool sticks_out(const Polygon& polygon, const std::vector<ConvexRing>& rings,
     bool split = false;
     const auto& points = ring.points();
     for (std::size_t e = 0; e < points.size() && !inside.empty(); ++e) {
-      const Affine2 f = left_of(points[e], points[(e + 1) % points.size()]);
-      const Polygon outside = with_interior(clip_below(inside, FilteredAffine({-f.d, -f.e, -f.f})));
-      inside = with_interior(clip_below(inside, FilteredAffine(f)));
+      Sides sides = cut(std::move(inside),
+                        FilteredAffine(left_of(points[e], points[(e + 1) % points.size()])), true);
+      inside = std::move(sides.below);
+      const Polygon& outside = sides.above;
       if (outside.empty()) continue;
       if (inside.empty() && !split) break;  // the ring misses the interior: go on whole
       split = true;
@@ -126,10 +156,11 @@ bool may_hide_together(const FaceRegion& face, const std::array<std::vector<EndS
     // each end's point shadows on the piece
     std::array<std::vector<Polygon>, 2> hidden;
     std::array<std::vector<Box>, 2> boxes;
+    const Polygon whole = with_interior(piece.points());
+    if (whole.empty()) continue;
     for (int end = 0; end < 2; ++end)
       for (std::size_t k = 0; k < n; ++k) {
-        hidden[end].push_back(ends[end][k].empty() ? Polygon{}
-                                                   : clip_to(piece.points(), ends[end][k]));
+        hidden[end].push_back(ends[end][k].empty() ? Polygon{} : clip_to(whole, ends[end][k]));
         boxes[end].push_back(box_of(hidden[end].back()));
       }
     for (std::size_t a = 0; a < n; ++a)

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "rational_enclosure.h"
+
 namespace penumbra::detail {
 namespace {
 
@@ -175,8 +177,8 @@ Poly Poly::shifted(const Rational& shift) const {
 }
 
 IntervalCurve::IntervalCurve(const PencilCurve& curve) {
-  for (const Rational& c : curve.num.c) num.emplace_back(CGAL::to_interval(c));
-  for (const Rational& c : curve.den.c) den.emplace_back(CGAL::to_interval(c));
+  for (const Rational& c : curve.num.c) num.push_back(enclosure(c));
+  for (const Rational& c : curve.den.c) den.push_back(enclosure(c));
 }
 
 std::optional<Interval> IntervalCurve::r(const Interval& s) const {
@@ -193,8 +195,7 @@ std::optional<Interval> IntervalCurve::r(const Interval& s) const {
 void Pencil::enclose() {
   const RationalVector2* vectors[4] = {&a0_, &a1_, &b0_, &b1_};
   for (int k = 0; k < 4; ++k)
-    enclosures_[k] = {Interval(CGAL::to_interval(vectors[k]->x())),
-                      Interval(CGAL::to_interval(vectors[k]->y()))};
+    enclosures_[k] = {enclosure(vectors[k]->x()), enclosure(vectors[k]->y())};
 }
 
 RationalPoint2 Pencil::point(const Rational& s, const Rational& r) const {

@@ -305,11 +305,12 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
                              [&] { prepared[o.occluder] = prepare_umbra_solid(solid, q1, q2); });
               solids.push_back({&solid, o.polygon, o.umbra, prepared[o.occluder]});
             }
-            auto curved = std::make_shared<const ExactUmbra>(exact_umbra(face, q1, q2, solids));
             // The flag now says that the umbra has joint parts; without them the straight
             // sets are the exact ones (DESIGN.md, "Shadow loops output").
-            shadow.joint_occlusion = curved->joint();
-            if (shadow.joint_occlusion) shadow.curved = std::move(curved);
+            auto curved = joint_umbra(face, q1, q2, solids);
+            shadow.joint_occlusion = curved && curved->joint();
+            if (shadow.joint_occlusion)
+              shadow.curved = std::make_shared<const ExactUmbra>(std::move(*curved));
           }
           return shadow;
         } catch (const std::domain_error&) {

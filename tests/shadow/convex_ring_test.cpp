@@ -13,6 +13,7 @@
 
 #include "convex_ring.h"
 #include "pencil.h"
+#include "rational_enclosure.h"
 
 using namespace penumbra;
 using detail::Affine2;
@@ -149,6 +150,49 @@ BOOST_AUTO_TEST_CASE(enclosures_hold_the_exact_values) {
     BOOST_TEST(encloses(at[0], exact_point.x()));
     BOOST_TEST(encloses(at[1], exact_point.y()));
   }
+}
+
+// enclosure() (rational_enclosure.h) holds the exact rational and is at most one ulp wide where
+// numerator and denominator fit 53 bits (its fast path), under round-to-nearest and under the
+// filters' upward rounding alike; larger rationals get CGAL's to_interval. Checked exactly:
+// the ends, as rationals, bound the value, and next to CGAL's own enclosure.
+BOOST_AUTO_TEST_CASE(the_enclosure_of_a_rational_holds_it_in_any_rounding) {
+  std::mt19937_64 rng(101);
+  int fast = 0, exact_ends = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int bits = 1 + trial % 70;  // up to 70-bit numerators and denominators
+    const auto draw = [&](bool positive) {
+      mpz_class z(static_cast<unsigned long>(rng() >> (bits > 64 ? 0 : 64 - std::min(bits, 64))));
+      if (bits > 64) z = (z << (bits - 64)) + static_cast<unsigned long>(rng() >> (128 - bits));
+      if (positive && z == 0) z = 1;
+      if (!positive && (rng() & 1)) z = -z;
+      return z;
+    };
+    Rational x(draw(false), draw(true));
+    x.canonicalize();  // the gcd removed
+    for (const bool upward : {false, true}) {
+      Interval e;
+      if (upward) {
+        CGAL::Protect_FPU_rounding<true> rounding;
+        e = detail::enclosure(x);
+      } else {
+        e = detail::enclosure(x);
+      }
+      BOOST_TEST(encloses(e, x));
+      const Interval cgal(CGAL::to_interval(x));
+      BOOST_TEST(e.inf() >= cgal.inf());  // never wider than CGAL's
+      BOOST_TEST(e.sup() <= cgal.sup());
+      if (mpz_sizeinbase(x.get_num_mpz_t(), 2) <= 53 &&
+          mpz_sizeinbase(x.get_den_mpz_t(), 2) <= 53) {
+        ++fast;
+        BOOST_TEST(e.sup() <= std::nextafter(e.inf(), HUGE_VAL));
+        exact_ends += e.inf() == e.sup();
+      }
+    }
+  }
+  BOOST_TEST(fast > 10000);
+  BOOST_TEST(exact_ends > 100);  // integers and dyadic quotients: a point interval
+  BOOST_TEST_MESSAGE(fast << " enclosures on the fast path, " << exact_ends << " exact");
 }
 
 BOOST_AUTO_TEST_SUITE_END()

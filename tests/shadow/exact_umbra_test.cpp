@@ -66,14 +66,22 @@ bool oracle_shadowed(const Face& face, const Point3& q1, const Point3& q2,
   });
 }
 
-ExactUmbra umbra_of(const Face& face, const Point3& q1, const Point3& q2,
-                    const std::vector<ConvexPolyhedron>& solids) {
+// the face's single-occluder shadows under the tube, and its occluders for exact_umbra.
+std::pair<FaceShadow, std::vector<UmbraOccluder>> single_shadows(
+    const Face& face, const Point3& q1, const Point3& q2,
+    const std::vector<ConvexPolyhedron>& solids) {
   std::vector<Occluder> occluders;
   for (std::size_t k = 0; k < solids.size(); ++k) occluders.push_back({k, &solids[k]});
-  const FaceShadow shadow = linear_face_shadow(face, q1, q2, occluders);
+  FaceShadow shadow = linear_face_shadow(face, q1, q2, occluders);
   std::vector<UmbraOccluder> umbra_occluders;
   for (const OccluderShadow& o : shadow.occluders)
     umbra_occluders.push_back({&solids[o.occluder], o.polygon, o.umbra});
+  return {std::move(shadow), std::move(umbra_occluders)};
+}
+
+ExactUmbra umbra_of(const Face& face, const Point3& q1, const Point3& q2,
+                    const std::vector<ConvexPolyhedron>& solids) {
+  const auto [shadow, umbra_occluders] = single_shadows(face, q1, q2, solids);
   ExactUmbra umbra = exact_umbra(face, q1, q2, umbra_occluders);
   const double shadow_area = CGAL::to_double(shadow.shadow.area);
   BOOST_TEST(std::abs(umbra.area() + umbra.penumbra_area() - shadow_area) <=
@@ -210,6 +218,14 @@ RandomScene random_scene(std::mt19937& random) {
   return scene;
 }
 
+// calls visit(k, scene) for count random scenes drawn from seed (fixed: failures must
+// reproduce).
+template <class Visit>
+void for_random_scenes(unsigned seed, int count, Visit visit) {
+  std::mt19937 random(seed);
+  for (int scene = 0; scene < count; ++scene) visit(scene, random_scene(random));
+}
+
 // The value of an exact coordinate in doubles, found apart from the library: the root-th
 // real root of its polynomial by Eigen's companion-matrix eigenvalues.
 double value_of(const AlgebraicCoordinate& x) {
@@ -333,20 +349,50 @@ BOOST_AUTO_TEST_CASE(two_boards_close_the_gap_along_the_derived_hyperbola) {
 }
 
 BOOST_AUTO_TEST_CASE(random_scenes_of_two_to_six_solids_agree_with_the_oracle) {
-  std::mt19937 random(23);  // fixed: failures must reproduce
   const Face& face = floor_face();
   int mismatches = 0, joint = 0, arcs = 0;
-  for (int scene = 0; scene < 8; ++scene) {
-    const auto [solids, q1, q2] = random_scene(random);
+  for_random_scenes(23, 8, [&](int scene, const RandomScene& drawn) {
+    const auto& [solids, q1, q2] = drawn;
     const ExactUmbra umbra = umbra_of(face, q1, q2, solids);
     joint += umbra.joint();
     compare_with_oracle(face, q1, q2, solids, umbra, 200, 100 + scene, &mismatches);
     arcs += check_across_arcs(face, q1, q2, solids, umbra);
-  }
+  });
   BOOST_TEST(mismatches == 0);
   BOOST_TEST(joint >= 3);
   BOOST_TEST(arcs >= 3);
   BOOST_TEST_MESSAGE(joint << " scenes with joint umbrae, " << arcs << " curved pieces crossed");
+}
+
+// joint_umbra (what `shadows --joint-umbrae` asks) leaves the sweep out only where it would
+// find no joint part: over random scenes (fixed seed), nullopt comes only where exact_umbra
+// finds none, and otherwise it is exact_umbra's set (the same areas and pieces of boundary).
+// One occluder alone, or each of the random scenes' solids alone, never hides the tube jointly.
+BOOST_AUTO_TEST_CASE(joint_umbra_leaves_out_only_faces_without_joint_parts) {
+  const Face& face = floor_face();
+  int left_out = 0, joint = 0, wrongly = 0;
+  for_random_scenes(31, 40, [&](int scene, const RandomScene& drawn) {
+    const auto& [solids, q1, q2] = drawn;
+    const auto occluders = single_shadows(face, q1, q2, solids).second;
+    const ExactUmbra swept = penumbra::exact_umbra(face, q1, q2, occluders);
+    const std::optional<ExactUmbra> asked = joint_umbra(face, q1, q2, occluders);
+    joint += swept.joint();
+    if (!asked) {
+      ++left_out;
+      wrongly += swept.joint();
+    } else {
+      BOOST_TEST(asked->joint() == swept.joint());
+      BOOST_TEST(asked->area() == swept.area());
+      BOOST_TEST(asked->penumbra_area() == swept.penumbra_area());
+      BOOST_TEST(asked->boundary().size() == swept.boundary().size());
+    }
+    for (const UmbraOccluder& alone : occluders)
+      BOOST_TEST(!joint_umbra(face, q1, q2, {alone}), "scene " << scene);
+  });
+  BOOST_TEST(wrongly == 0);
+  BOOST_TEST(joint >= 5);
+  BOOST_TEST(left_out >= 5);
+  BOOST_TEST_MESSAGE(joint << " of 40 scenes with joint umbrae, " << left_out << " left out");
 }
 
 // The exact form of the curved regions (shadows --exact, check): every corner, computed

@@ -161,4 +161,12 @@ ExactUmbra exact_umbra(const Face& face, const std::vector<Ring2>& pieces,
                        const std::vector<Ring2>& boundary, const Point3& q1, const Point3& q2,
                        const std::vector<UmbraOccluder>& occluders, double tolerance = 1e-6);
 
+// exact_umbra, made only when the umbra may have a joint part: nullopt when no touching group
+// of occluders may hide the source together anywhere on the face (docs/linear-shadows.md,
+// "Groups without W"), and then the straight single umbrae are the exact umbra. What the
+// shadows pipeline asks; the sweep is left out where it would find nothing joint.
+std::optional<ExactUmbra> joint_umbra(const Face& face, const Point3& q1, const Point3& q2,
+                                      const std::vector<UmbraOccluder>& occluders,
+                                      double tolerance = 1e-6);
+
 }  // namespace penumbra
