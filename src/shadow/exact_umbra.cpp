@@ -861,26 +861,36 @@ double world_length(const FaceFrame& frame, double du, double dv) {
                    dv * dv * CGAL::to_double(frame.squared_v()));
 }
 
-// appends the points of curve over [s0, s1] (either order) to points, subdividing until
-// each chord's midpoint lies within tolerance of the curve.
+// appends the points of curve over (s0, s1] (either order), a and b its points at s0 and s1,
+// subdividing until each chord's midpoint lies within tolerance of the curve.
 void densify(const Pencil& pencil, const Curve& curve, const FaceFrame& frame, double s0, double s1,
-             double tolerance, std::vector<std::array<double, 2>>& points, int depth = 0) {
-  const auto at = [&](double s) { return pencil.point(s, curve.f.r(s)); };
-  const std::array<double, 2> a = at(s0), b = at(s1), m = at((s0 + s1) / 2);
-  if (points.empty()) points.push_back(a);
+             const std::array<double, 2>& a, const std::array<double, 2>& b, double tolerance,
+             std::vector<std::array<double, 2>>& points, int depth) {
+  const double s = (s0 + s1) / 2;
+  const std::array<double, 2> m = pencil.point(s, curve.f.r(s));
   const double deviation = world_length(frame, m[0] - (a[0] + b[0]) / 2, m[1] - (a[1] + b[1]) / 2);
   if (curve.q.straight() || deviation <= tolerance || depth > 40) {
     if (!curve.q.straight() && depth == 0) {
       // a single chord may miss a bulge between the samples: split once at least.
-      densify(pencil, curve, frame, s0, (s0 + s1) / 2, tolerance, points, depth + 1);
-      densify(pencil, curve, frame, (s0 + s1) / 2, s1, tolerance, points, depth + 1);
+      densify(pencil, curve, frame, s0, s, a, m, tolerance, points, depth + 1);
+      densify(pencil, curve, frame, s, s1, m, b, tolerance, points, depth + 1);
       return;
     }
     points.push_back(b);
     return;
   }
-  densify(pencil, curve, frame, s0, (s0 + s1) / 2, tolerance, points, depth + 1);
-  densify(pencil, curve, frame, (s0 + s1) / 2, s1, tolerance, points, depth + 1);
+  densify(pencil, curve, frame, s0, s, a, m, tolerance, points, depth + 1);
+  densify(pencil, curve, frame, s, s1, m, b, tolerance, points, depth + 1);
+}
+
+// appends the points of curve over [s0, s1] (either order; its first point only when points
+// is empty).
+void densify(const Pencil& pencil, const Curve& curve, const FaceFrame& frame, double s0, double s1,
+             double tolerance, std::vector<std::array<double, 2>>& points) {
+  const std::array<double, 2> a = pencil.point(s0, curve.f.r(s0)),
+                              b = pencil.point(s1, curve.f.r(s1));
+  if (points.empty()) points.push_back(a);
+  densify(pencil, curve, frame, s0, s1, a, b, tolerance, points, 0);
 }
 
 UmbraArc arc_of(const Curve& curve) {

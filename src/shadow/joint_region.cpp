@@ -113,16 +113,18 @@ bool apart(const Box& a, const Box& b) {
   return false;
 }
 
-// true when the convex polygon (with interior) has interior points outside every ring from
-// rings[k] on: each ring's inside is cut off edge by edge, and the piece outside an edge and
-// inside the edges before it goes on to the next ring; a ring holding the polygon leaves
-// nothing, a ring whose box is apart from it leaves it whole.
+// true when the convex polygon (with interior) has interior points outside every ring
+// rings[order[k]], order[k + 1], ...: each ring's inside is cut off edge by edge, and the
+// piece outside an edge and inside the edges before it goes on to the next ring; a ring
+// holding the polygon leaves nothing, a ring whose box is apart from it leaves it whole.
+// The answer does not depend on the order, only the work does.
 bool sticks_out(const Polygon& polygon, const std::vector<ConvexRing>& rings,
-                const std::vector<Box>& boxes, std::size_t k) {
+                const std::vector<Box>& boxes, const std::vector<std::size_t>& order,
+                std::size_t k) {
   const Box box = box_of(polygon);
-  for (; k < rings.size(); ++k) {
-    const ConvexRing& ring = rings[k];
-    if (ring.empty() || apart(box, boxes[k])) continue;
+  for (; k < order.size(); ++k) {
+    const ConvexRing& ring = rings[order[k]];
+    if (ring.empty() || apart(box, boxes[order[k]])) continue;
     if (std::all_of(polygon.begin(), polygon.end(),
                     [&](const RationalPoint2& p) { return ring.contains(p); }))
       return false;
@@ -137,7 +139,7 @@ bool sticks_out(const Polygon& polygon, const std::vector<ConvexRing>& rings,
       if (outside.empty()) continue;
       if (inside.empty() && !split) break;  // the ring misses the interior: go on whole
       split = true;
-      if (sticks_out(outside, rings, boxes, k + 1)) return true;
+      if (sticks_out(outside, rings, boxes, order, k + 1)) return true;
     }
     if (split) return false;  // every piece outside the ring went on
   }
@@ -168,7 +170,15 @@ bool may_hide_together(const FaceRegion& face, const std::array<std::vector<EndS
         if (hidden[0][a].empty() || hidden[1][b].empty() || apart(boxes[0][a], boxes[1][b]))
           continue;
         const Polygon both = clip_to(hidden[0][a], ends[1][b]);
-        if (!both.empty() && sticks_out(both, umbrae, umbra_boxes, 0)) return true;
+        if (both.empty()) continue;
+        // a's and b's own umbrae first: they hold most of the set, all of it when a = b
+        // (the umbra is where both ends are hidden), so the cutting ends sooner.
+        std::vector<std::size_t> order;
+        for (const std::size_t first : {a, b})
+          if (first < umbrae.size() && (order.empty() || order[0] != first)) order.push_back(first);
+        for (std::size_t k = 0; k < umbrae.size(); ++k)
+          if (k != a && k != b) order.push_back(k);
+        if (sticks_out(both, umbrae, umbra_boxes, order, 0)) return true;
       }
   }
   return false;

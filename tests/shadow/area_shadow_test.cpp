@@ -11,6 +11,7 @@
 #include "penumbra/scene/load_scene.h"
 #include "penumbra/shadow/shadow_map.h"
 #include "shadow_support.h"
+#include "support/heavy.h"
 
 namespace {
 
@@ -72,7 +73,7 @@ BOOST_AUTO_TEST_CASE(sets_against_point_oracles_on_random_scenes) {
     const auto& panel = std::get<AreaLight>(scene.lights[0].source);
     const std::vector<Point3>& source = panel.polygon->faces()[panel.front].vertices;
     BOOST_TEST(floor.extended);
-    for (int k = 0; k < 300; ++k) {
+    for (int k = 0; k < penumbra::test::samples(300); ++k) {
       // Half the points anywhere on the floor, half under the solids.
       const Point2 q = k % 2 ? random_point(face.ring, random)
                              : face.frame.to_frame(Point3(centre(random), centre(random), 0));
@@ -97,9 +98,9 @@ BOOST_AUTO_TEST_CASE(sets_against_point_oracles_on_random_scenes) {
       penumbra += in_shadow && !in_umbra;
     }
   }
-  BOOST_TEST(checked > 1700);
-  BOOST_TEST(umbra > 20);
-  BOOST_TEST(penumbra > 100);
+  BOOST_TEST(checked > penumbra::test::samples(1700));
+  BOOST_TEST(umbra > penumbra::test::samples(20));
+  BOOST_TEST(penumbra > penumbra::test::samples(100));
 }
 
 // A one-sided panel lights nothing behind its plane: a wall rising through the panel's plane

@@ -11,6 +11,7 @@
 #include "convex_difference.h"
 #include "half_plane.h"
 #include "region_set.h"
+#include "support/heavy.h"
 
 using namespace penumbra;
 
@@ -48,7 +49,7 @@ BOOST_AUTO_TEST_SUITE(convex_difference)
 BOOST_AUTO_TEST_CASE(agrees_with_polygon_set_2) {
   std::mt19937 random(7);  // fixed seed
   int tested = 0, several = 0, holes = 0;
-  for (int iteration = 0; iteration < 12000; ++iteration) {
+  for (int iteration = 0; iteration < penumbra::test::samples(12000); ++iteration) {
     const Ring2& window = windows[static_cast<std::size_t>(iteration % 3)];
     const std::vector<Ring2> polygons = random_polygons(random, window, iteration);
     if (polygons.empty()) continue;
@@ -74,9 +75,9 @@ BOOST_AUTO_TEST_CASE(agrees_with_polygon_set_2) {
     for (const auto& polygon : expected.polygons) holes += !polygon.holes.empty();
   }
   // the fast path must have been exercised, with several polygons and with holes
-  BOOST_TEST(tested > 1000);
-  BOOST_TEST(several > 100);
-  BOOST_TEST(holes > 10);
+  BOOST_TEST(tested > penumbra::test::samples(1000));
+  BOOST_TEST(several > penumbra::test::samples(100));
+  BOOST_TEST(holes > penumbra::test::samples(10));
 }
 
 // The linear-source path (linear_face_shadow.cpp) looks for overlapping interiors among the

@@ -19,6 +19,7 @@
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "penumbra/shadow/shadow_map.h"
 #include "solids.h"
+#include "support/heavy.h"
 
 using namespace penumbra;
 
@@ -371,7 +372,7 @@ BOOST_AUTO_TEST_CASE(random_scenes_of_two_to_six_solids_agree_with_the_oracle) {
 BOOST_AUTO_TEST_CASE(joint_umbra_leaves_out_only_faces_without_joint_parts) {
   const Face& face = floor_face();
   int left_out = 0, joint = 0, wrongly = 0;
-  for_random_scenes(31, 40, [&](int scene, const RandomScene& drawn) {
+  for_random_scenes(31, penumbra::test::samples(40), [&](int scene, const RandomScene& drawn) {
     const auto& [solids, q1, q2] = drawn;
     const auto occluders = single_shadows(face, q1, q2, solids).second;
     const ExactUmbra swept = penumbra::exact_umbra(face, q1, q2, occluders);
@@ -390,9 +391,10 @@ BOOST_AUTO_TEST_CASE(joint_umbra_leaves_out_only_faces_without_joint_parts) {
       BOOST_TEST(!joint_umbra(face, q1, q2, {alone}), "scene " << scene);
   });
   BOOST_TEST(wrongly == 0);
-  BOOST_TEST(joint >= 5);
-  BOOST_TEST(left_out >= 5);
-  BOOST_TEST_MESSAGE(joint << " of 40 scenes with joint umbrae, " << left_out << " left out");
+  BOOST_TEST(joint >= penumbra::test::samples(5));
+  BOOST_TEST(left_out >= penumbra::test::samples(5));
+  BOOST_TEST_MESSAGE(joint << " of " << penumbra::test::samples(40) << " scenes with joint umbrae, "
+                           << left_out << " left out");
 }
 
 // The exact form of the curved regions (shadows --exact, check): every corner, computed

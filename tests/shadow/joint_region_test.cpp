@@ -12,6 +12,7 @@
 #include "half_plane.h"
 #include "joint_region.h"
 #include "region_set.h"
+#include "support/heavy.h"
 
 using namespace penumbra;
 using detail::ConvexRing;
@@ -110,7 +111,7 @@ BOOST_AUTO_TEST_CASE(agrees_with_polygon_set_2) {
   };
   const Ring2 face = {Point2(1, 0), Point2(12, 2), Point2(10, 12), Point2(0, 9)};
   int yes = 0, no = 0, covered = 0;
-  for (int iteration = 0; iteration < 1000; ++iteration) {
+  for (int iteration = 0; iteration < penumbra::test::samples(1000); ++iteration) {
     const std::size_t n = 2 + iteration % 3;
     std::vector<Ring2> first, second, umbrae;
     for (std::size_t k = 0; k < n; ++k) {
@@ -138,9 +139,9 @@ BOOST_AUTO_TEST_CASE(agrees_with_polygon_set_2) {
   BOOST_TEST_MESSAGE("may " << yes << ", may not " << no << " (" << covered
                             << " covered by umbrae)");
   // both answers occur, and umbrae cover overlapping pairs often enough to be tested
-  BOOST_TEST(yes >= 100);
-  BOOST_TEST(no >= 100);
-  BOOST_TEST(covered >= 50);
+  BOOST_TEST(yes >= penumbra::test::samples(100));
+  BOOST_TEST(no >= penumbra::test::samples(100));
+  BOOST_TEST(covered >= penumbra::test::samples(50));
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -12,6 +12,7 @@
 #include "oracle.h"
 #include "shadow_support.h"
 #include "support/fixtures.h"
+#include "support/heavy.h"
 
 using namespace penumbra;
 using namespace penumbra::test;
@@ -121,7 +122,7 @@ BOOST_AUTO_TEST_CASE(random_grid_scenes_agree_with_the_exact_oracle) {
   std::mt19937 random(20240603);
   Tally tally;
   int scenes = 0;
-  while (scenes < 40) {
+  while (scenes < penumbra::test::samples(40)) {
     Scene scene;
     try {
       scene = scene_from_text(random_scene(random));
@@ -137,7 +138,7 @@ BOOST_AUTO_TEST_CASE(random_grid_scenes_agree_with_the_exact_oracle) {
   BOOST_TEST_MESSAGE("oracle, random scenes: " << tally.compared << " points compared, "
                                                << tally.on_boundary << " on a boundary, "
                                                << tally.disagreements << " disagreements");
-  BOOST_TEST(tally.compared >= 5000u);
+  BOOST_TEST(tally.compared >= std::size_t(penumbra::test::samples(5000)));
   BOOST_TEST(tally.disagreements == 0u);
 }
 
@@ -151,12 +152,13 @@ BOOST_AUTO_TEST_CASE(degenerate_fixtures_agree_with_the_exact_oracle) {
     const Scene scene = load_scene(fixture(std::string("scenes/") + name + ".json"));
     ShadowOptions options;
     options.range_fraction = 0;
-    compare(scene, compute_shadows(scene, options), 200, random, tally, name);
+    compare(scene, compute_shadows(scene, options), penumbra::test::samples(200), random, tally,
+            name);
   }
   BOOST_TEST_MESSAGE("oracle, degenerate fixtures: " << tally.compared << " points compared, "
                                                      << tally.on_boundary << " on a boundary, "
                                                      << tally.disagreements << " disagreements");
-  BOOST_TEST(tally.compared >= 5000u);
+  BOOST_TEST(tally.compared >= std::size_t(penumbra::test::samples(5000)));
   BOOST_TEST(tally.disagreements == 0u);
 }
 
