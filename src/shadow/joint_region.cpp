@@ -146,6 +146,18 @@ bool sticks_out(const Polygon& polygon, const std::vector<ConvexRing>& rings,
   return true;
 }
 
+// the indices of count umbrae with a's and b's first (a may equal b): they hold most of the
+// set where a hides one end and b the other, all of it when a = b (the umbra is where both
+// ends are hidden), so sticks_out's cutting ends sooner.
+std::vector<std::size_t> own_umbrae_first(std::size_t a, std::size_t b, std::size_t count) {
+  std::vector<std::size_t> order;
+  if (a < count) order.push_back(a);
+  if (b < count && b != a) order.push_back(b);
+  for (std::size_t k = 0; k < count; ++k)
+    if (k != a && k != b) order.push_back(k);
+  return order;
+}
+
 }  // namespace
 
 bool may_hide_together(const FaceRegion& face, const std::array<std::vector<EndShadow>, 2>& ends,
@@ -171,14 +183,8 @@ bool may_hide_together(const FaceRegion& face, const std::array<std::vector<EndS
           continue;
         const Polygon both = clip_to(hidden[0][a], ends[1][b]);
         if (both.empty()) continue;
-        // a's and b's own umbrae first: they hold most of the set, all of it when a = b
-        // (the umbra is where both ends are hidden), so the cutting ends sooner.
-        std::vector<std::size_t> order;
-        for (const std::size_t first : {a, b})
-          if (first < umbrae.size() && (order.empty() || order[0] != first)) order.push_back(first);
-        for (std::size_t k = 0; k < umbrae.size(); ++k)
-          if (k != a && k != b) order.push_back(k);
-        if (sticks_out(both, umbrae, umbra_boxes, order, 0)) return true;
+        if (sticks_out(both, umbrae, umbra_boxes, own_umbrae_first(a, b, umbrae.size()), 0))
+          return true;
       }
   }
   return false;

@@ -149,8 +149,8 @@ BOOST_AUTO_TEST_CASE(every_verb_runs_and_the_exact_ones_name_the_tessellation) {
   BOOST_TEST_MESSAGE("under the teapot " << inside << ", beside it " << outside
                                          << ", within twice the tolerance of its outline "
                                          << near_edge);
-  BOOST_TEST(inside > penumbra::test::samples(500));
-  BOOST_TEST(outside > penumbra::test::samples(500));
+  BOOST_TEST(inside > 500);  // 541 at the sanitizers' coarser tolerance, 734 at the finer
+  BOOST_TEST(outside > 500);
 }
 
 BOOST_AUTO_TEST_CASE(a_bad_patch_file_exits_2_naming_file_and_line_and_writes_nothing) {
