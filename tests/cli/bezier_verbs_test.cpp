@@ -101,7 +101,7 @@ BOOST_AUTO_TEST_CASE(every_verb_runs_and_the_exact_ones_name_the_tessellation) {
   BOOST_TEST(document["tessellated"][0]["patches"] == 32);
   BOOST_TEST(document["tessellated"][0]["triangles"] == loaded.tessellated.at(0).triangles);
   BOOST_TEST(document["tessellated"][0]["tolerance"] == kTolerance);
-  for (const std::string verb :
+  for (const std::string& verb :
        {"illuminance " + s + " --workplane 0.01 --spacing 0.5 -o " + out("grid.csv"),
         "render " + s + " -o " + out("render.png"),
         "raytrace " + s + " -o " + out("ray.png") + " --values " + out("ray.csv"),
