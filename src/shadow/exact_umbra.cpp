@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <functional>
 #include <iterator>
 #include <map>
@@ -675,23 +676,41 @@ class Sweep {
   }
 
   // Where the curve a meets the curve b (an id), a pole (den = 0, b = kPole) or the centre
-  // (r = 0, b = kCentre): the real roots of the crossing polynomial, made once per sector.
+  // (r = 0, b = kCentre): the real roots of the crossing polynomial, isolated once per sector
+  // when first needed; nullptr when intervals show that it has no root in the closed range
+  // of s (most pairs of a slab never meet in it, and isolating roots is the costly part).
   static constexpr int kPole = -1, kCentre = -2;
-  const std::vector<Algebraic>& crossing_roots(int a, int b) {
-    const auto key = std::make_pair(a, b);
-    const auto found = crossings_.find(key);
-    if (found != crossings_.end()) return found->second;
-    const PencilCurve& c = impl_.curves[a].f;
-    Poly p;
-    if (b == kPole) {
-      p = c.den;
-    } else if (b == kCentre) {
-      p = c.num;
-    } else {
-      const PencilCurve& o = impl_.curves[b].f;
-      p = c.num * o.den - o.num * c.den;
+  const std::vector<Algebraic>* crossing_roots(int a, int b, const Interval& range) {
+    CGAL::Protect_FPU_rounding<true> upward;
+    auto found = crossings_.find({a, b});
+    if (found == crossings_.end()) {
+      std::vector<Interval> enclosure;
+      const detail::IntervalCurve& c = enclosed(a);
+      if (b == kPole) {
+        enclosure = c.den;
+      } else if (b == kCentre) {
+        enclosure = c.num;
+      } else {
+        const detail::IntervalCurve& o = enclosed(b);
+        enclosure =
+            detail::difference(detail::product(c.num, o.den), detail::product(o.num, c.den));
+      }
+      found = crossings_.emplace(std::pair{a, b}, Crossing{std::move(enclosure), {}}).first;
     }
-    return crossings_[key] = all_roots(p);
+    Crossing& crossing = found->second;
+    if (detail::surely_no_root(crossing.enclosure, range)) return nullptr;
+    if (!crossing.roots) {
+      const PencilCurve& c = impl_.curves[a].f;
+      if (b == kPole) {
+        crossing.roots = all_roots(c.den);
+      } else if (b == kCentre) {
+        crossing.roots = all_roots(c.num);
+      } else {
+        const PencilCurve& o = impl_.curves[b].f;
+        crossing.roots = all_roots(c.num * o.den - o.num * c.den);
+      }
+    }
+    return &*crossing.roots;
   }
 
   // the conic t_high(j) = t_low(k) of the edges f of occluder j and e of occluder k.
@@ -722,42 +741,24 @@ class Sweep {
     const Rational &sa = sector.seams[seam], &sb = sector.seams[seam + 1];
     const Rational middle = detail::simplest_between(sa, sb);
     // The lines that matter on this slab, in increasing r.
-    std::vector<std::pair<Rational, int>> ordered;
-    const Interval enclosed_middle = detail::enclosure(middle);
-    for (std::size_t k = 0; k < line_curves.size(); ++k) {
-      if (surely_irrelevant(pencil, lines_[line_curves[k]], line_enclosures[k], enclosed_middle))
-        continue;
-      const auto r = r_at(impl_.curves[line_ids[k]], middle);
-      if (!r || (pencil.finite() && !CGAL::is_positive(*r))) continue;
-      if (!relevant(lines_[line_curves[k]], pencil.point(middle, *r))) continue;
-      ordered.emplace_back(*r, line_ids[k]);
-    }
-    std::sort(ordered.begin(), ordered.end());
-    ordered.erase(std::unique(ordered.begin(), ordered.end(),
-                              [](const auto& a, const auto& b) { return a.first == b.first; }),
-                  ordered.end());
     std::vector<int> straight;
-    for (const auto& entry : ordered) straight.push_back(entry.second);
+    std::vector<Rational> below;  // a point r below each line and above the one before
+    if (!lines_by_intervals(pencil, middle, line_curves, line_ids, line_enclosures, straight,
+                            below))
+      lines_exactly(pencil, middle, line_curves, line_ids, line_enclosures, straight, below);
 
     // The conics of each piece between consecutive lines.
     std::vector<Portion> portions;
     std::vector<const std::vector<Algebraic>*> crossings;  // the roots of each
-    for (std::size_t k = 0; k <= ordered.size(); ++k) {
-      if (k == ordered.size()) break;  // above the last line: outside the face
-      Rational r;
-      if (k == 0) {
-        if (!pencil.finite()) continue;
-        r = detail::simplest_between(0, ordered[0].first);
-      } else {
-        r = detail::simplest_between(ordered[k - 1].first, ordered[k].first);
-      }
-      const RationalPoint2 point = pencil.point(middle, r);
+    // (none above the last line: outside the face; none below the first around no centre)
+    for (std::size_t k = pencil.finite() ? 0 : 1; k < straight.size(); ++k) {
+      const RationalPoint2 point = pencil.point(middle, below[k]);
       const Probe p(point);
       if (!impl_.face.contains(p) || !shared(p)) continue;
       const std::vector<BlockedInterval> intervals = ends(p);
       Portion portion;
-      portion.bottom = k == 0 ? -1 : ordered[k - 1].second;
-      portion.top = ordered[k].second;
+      portion.bottom = k == 0 ? -1 : straight[k - 1];
+      portion.top = straight[k];
       for (std::size_t j = 0; j < intervals.size(); ++j)
         for (std::size_t i = 0; i < intervals.size(); ++i) {
           if (i == j || intervals[j].kind != BlockedInterval::Kind::interval ||
@@ -773,15 +774,18 @@ class Sweep {
     }
     // Where the conics cross each other, their piece's bounds, or leave through r = 0 or
     // infinity.
+    const Interval range(detail::enclosure(sa).inf(), detail::enclosure(sb).sup());
+    const auto cross = [&](int c, int with) {
+      if (const auto* roots = crossing_roots(c, with, range)) crossings.push_back(roots);
+    };
     for (const Portion& portion : portions)
       for (std::size_t a = 0; a < portion.conics.size(); ++a) {
         const int c = portion.conics[a];
-        crossings.push_back(&crossing_roots(c, kPole));
-        if (pencil.finite()) crossings.push_back(&crossing_roots(c, kCentre));
+        cross(c, kPole);
+        if (pencil.finite()) cross(c, kCentre);
         for (int bound : {portion.bottom, portion.top})
-          if (bound >= 0) crossings.push_back(&crossing_roots(c, bound));
-        for (std::size_t b = a + 1; b < portion.conics.size(); ++b)
-          crossings.push_back(&crossing_roots(c, portion.conics[b]));
+          if (bound >= 0) cross(c, bound);
+        for (std::size_t b = a + 1; b < portion.conics.size(); ++b) cross(c, portion.conics[b]);
       }
     const Algebraic &low = sector.seam_values[seam], &high = sector.seam_values[seam + 1];
     std::vector<Algebraic> cuts{low, high};
@@ -797,40 +801,201 @@ class Sweep {
       column.high = cuts[k + 1];
       column.sample = (cuts.size() == 2) ? middle : rational_between(cuts[k], cuts[k + 1]);
       const Rational& s = column.sample;
-      std::vector<std::pair<Rational, int>> at;
-      for (int id : straight) at.emplace_back(*r_at(impl_.curves[id], s), id);
-      for (const Portion& portion : portions) {
-        const Rational bottom =
-            portion.bottom < 0 ? Rational(0) : *r_at(impl_.curves[portion.bottom], s);
-        const Rational top = *r_at(impl_.curves[portion.top], s);
-        for (int id : portion.conics) {
-          const auto r = r_at(impl_.curves[id], s);
-          if (r && *r > bottom && *r < top) at.emplace_back(*r, id);
-        }
-      }
-      std::sort(at.begin(), at.end());
-      at.erase(std::unique(at.begin(), at.end(),
-                           [](const auto& a, const auto& b) { return a.first == b.first; }),
-               at.end());
-      for (const auto& entry : at) column.curves.push_back(entry.second);
-      for (std::size_t cell = 0; cell <= at.size(); ++cell) {
-        Rational r;
-        if (at.empty()) {
-          r = 1;
-        } else if (cell == 0) {
-          r = pencil.finite() ? detail::simplest_between(0, at[0].first)
-                              : Rational(at[0].first - 1);
-        } else if (cell == at.size()) {
-          r = at.back().first + 1;
-        } else {
-          r = detail::simplest_between(at[cell - 1].first, at[cell].first);
-        }
+      std::vector<Rational> samples;  // a point r of each cell, from below
+      if (!order_by_intervals(pencil, s, straight, portions, column.curves, samples))
+        order_exactly(pencil, s, straight, portions, column.curves, samples);
+      for (const Rational& r : samples) {
         const auto certain = maybe_label(pencil, s, r);
         column.labels.push_back(certain ? *certain : label_of(pencil.point(s, r)));
       }
       impl_.cells += column.labels.size();
       sector.columns.push_back(std::move(column));
     }
+  }
+
+  // The lines of the slab that matter at its middle s, by increasing distinct r, and a point
+  // r below each and above the one before (below the first: above the centre, if finite).
+  void lines_exactly(const Pencil& pencil, const Rational& middle,
+                     const std::vector<std::size_t>& line_curves, const std::vector<int>& line_ids,
+                     const std::vector<detail::IntervalCurve>& line_enclosures,
+                     std::vector<int>& straight, std::vector<Rational>& below) const {
+    std::vector<std::pair<Rational, int>> ordered;
+    const Interval enclosed_middle = detail::enclosure(middle);
+    for (std::size_t k = 0; k < line_curves.size(); ++k) {
+      if (surely_irrelevant(pencil, lines_[line_curves[k]], line_enclosures[k], enclosed_middle))
+        continue;
+      const auto r = r_at(impl_.curves[line_ids[k]], middle);
+      if (!r || (pencil.finite() && !CGAL::is_positive(*r))) continue;
+      if (!relevant(lines_[line_curves[k]], pencil.point(middle, *r))) continue;
+      ordered.emplace_back(*r, line_ids[k]);
+    }
+    std::sort(ordered.begin(), ordered.end());
+    ordered.erase(std::unique(ordered.begin(), ordered.end(),
+                              [](const auto& a, const auto& b) { return a.first == b.first; }),
+                  ordered.end());
+    for (std::size_t k = 0; k < ordered.size(); ++k) {
+      straight.push_back(ordered[k].second);
+      if (k > 0)
+        below.push_back(detail::simplest_between(ordered[k - 1].first, ordered[k].first));
+      else
+        below.push_back(pencil.finite() ? detail::simplest_between(0, ordered[0].first) : 0);
+    }
+  }
+
+  // lines_exactly from intervals (upward rounding; whether a line matters exactly where they
+  // cannot tell), the points r doubles with few bits: false, with nothing made, when the
+  // enclosures of two values overlap, one holds a pole, or one around a finite centre holds 0.
+  bool lines_by_intervals(const Pencil& pencil, const Rational& middle,
+                          const std::vector<std::size_t>& line_curves,
+                          const std::vector<int>& line_ids,
+                          const std::vector<detail::IntervalCurve>& line_enclosures,
+                          std::vector<int>& straight, std::vector<Rational>& below) const {
+    CGAL::Protect_FPU_rounding<true> upward;
+    const Interval at_s = detail::enclosure(middle);
+    std::vector<std::pair<Interval, int>> ordered;
+    for (std::size_t k = 0; k < line_curves.size(); ++k) {
+      const SweepLine& line = lines_[line_curves[k]];
+      const auto r = line_enclosures[k].r(at_s);
+      if (!r) return false;
+      if (pencil.finite() && r->sup() <= 0) continue;
+      const std::array<Interval, 2> at = detail::interval_point(pencil, at_s, *r);
+      if (surely_irrelevant(line, at)) continue;
+      if (pencil.finite() && !(r->inf() > 0)) return false;
+      if (!surely_relevant(line, at) &&
+          !relevant(line, pencil.point(middle, *r_at(impl_.curves[line_ids[k]], middle))))
+        continue;
+      ordered.emplace_back(*r, line_ids[k]);
+    }
+    std::sort(ordered.begin(), ordered.end(),
+              [](const auto& a, const auto& b) { return a.first.inf() < b.first.inf(); });
+    std::vector<double> points;
+    for (std::size_t k = 0; k < ordered.size(); ++k) {
+      std::optional<double> r = 0;
+      if (k > 0)
+        r = detail::short_between(ordered[k - 1].first.sup(), ordered[k].first.inf());
+      else if (pencil.finite())
+        r = detail::short_between(0, ordered[0].first.inf());
+      if (!r) return false;  // (overlapping enclosures among them)
+      points.push_back(*r);
+    }
+    for (const auto& entry : ordered) straight.push_back(entry.second);
+    for (double r : points) below.emplace_back(r);
+    return true;
+  }
+
+  // true when the intervals show that the line matters at the point enclosed by at: in the
+  // face and in the ring of a role that matters outside W too (or anywhere).
+  bool surely_relevant(const SweepLine& line, const std::array<Interval, 2>& at) const {
+    if (impl_.face.maybe_contains(at) != true) return false;
+    return std::any_of(line.roles.begin(), line.roles.end(), [&](const LineRole& role) {
+      return !role.in_w && (!role.ring || role.ring->maybe_contains(at) == true);
+    });
+  }
+
+  // The curves of a column at its sample s (the lines that matter on the slab and each
+  // portion's conics between its bounds), by increasing distinct r, and a point r of each
+  // cell between them (below the first and above the last too).
+  void order_exactly(const Pencil& pencil, const Rational& s, const std::vector<int>& straight,
+                     const std::vector<Portion>& portions, std::vector<int>& curves,
+                     std::vector<Rational>& samples) const {
+    std::vector<std::pair<Rational, int>> at;
+    for (int id : straight) at.emplace_back(*r_at(impl_.curves[id], s), id);
+    for (const Portion& portion : portions)
+      for (int id : portion.conics)
+        if (strictly_inside(portion, id, s)) at.emplace_back(*r_at(impl_.curves[id], s), id);
+    std::sort(at.begin(), at.end());
+    at.erase(std::unique(at.begin(), at.end(),
+                         [](const auto& a, const auto& b) { return a.first == b.first; }),
+             at.end());
+    for (const auto& entry : at) curves.push_back(entry.second);
+    for (std::size_t cell = 0; cell <= at.size(); ++cell) {
+      if (at.empty()) {
+        samples.emplace_back(1);
+      } else if (cell == 0) {
+        samples.push_back(pencil.finite() ? detail::simplest_between(0, at[0].first)
+                                          : Rational(at[0].first - 1));
+      } else if (cell == at.size()) {
+        samples.push_back(at.back().first + 1);
+      } else {
+        samples.push_back(detail::simplest_between(at[cell - 1].first, at[cell].first));
+      }
+    }
+  }
+
+  // order_exactly from intervals (upward rounding; a conic's place against its portion's
+  // bounds exactly where they cannot tell), the cells' points doubles with few bits: false,
+  // with nothing made, when the enclosures of two values overlap or a curve's holds a pole.
+  bool order_by_intervals(const Pencil& pencil, const Rational& s, const std::vector<int>& straight,
+                          const std::vector<Portion>& portions, std::vector<int>& curves,
+                          std::vector<Rational>& samples) {
+    CGAL::Protect_FPU_rounding<true> upward;
+    const Interval at_s = detail::enclosure(s);
+    std::vector<std::pair<Interval, int>> at;
+    const auto value = [&](int id) { return enclosed(id).r(at_s); };
+    for (int id : straight) {
+      const auto r = value(id);
+      if (!r) return false;
+      at.emplace_back(*r, id);
+    }
+    for (const Portion& portion : portions) {
+      const auto bottom = portion.bottom < 0 ? std::optional<Interval>(0) : value(portion.bottom);
+      const auto top = value(portion.top);
+      if (!bottom || !top) return false;
+      for (int id : portion.conics) {
+        const auto r = value(id);
+        if (!r) return false;
+        if (r->inf() > bottom->sup() && r->sup() < top->inf()) {
+          at.emplace_back(*r, id);
+        } else if (!(r->sup() <= bottom->inf() || r->inf() >= top->sup()) &&
+                   strictly_inside(portion, id, s)) {
+          at.emplace_back(*r, id);  // (a conic on a bound there is left out, as order_exactly does)
+        }
+      }
+    }
+    std::sort(at.begin(), at.end(),
+              [](const auto& a, const auto& b) { return a.first.inf() < b.first.inf(); });
+    for (std::size_t k = 0; k + 1 < at.size(); ++k)
+      if (!(at[k].first.sup() < at[k + 1].first.inf())) return false;
+    std::vector<double> points;
+    for (std::size_t cell = 0; cell <= at.size(); ++cell) {
+      std::optional<double> r;
+      if (at.empty()) {
+        r = 1;
+      } else if (cell == 0) {
+        const double first = at[0].first.inf();
+        if (pencil.finite())
+          r = detail::short_between(0, first);
+        else if (const double below = std::floor(first) - 1; below < first)
+          r = below;
+      } else if (cell == at.size()) {
+        const double last = at.back().first.sup();
+        if (const double above = std::ceil(last) + 1; above > last) r = above;
+      } else {
+        r = detail::short_between(at[cell - 1].first.sup(), at[cell].first.inf());
+      }
+      if (!r) return false;
+      points.push_back(*r);
+    }
+    for (const auto& entry : at) curves.push_back(entry.second);
+    for (double r : points) samples.emplace_back(r);
+    return true;
+  }
+
+  // true when the conic id lies strictly between the portion's bounds at s (exact).
+  bool strictly_inside(const Portion& portion, int id, const Rational& s) const {
+    const auto r = r_at(impl_.curves[id], s);
+    if (!r) return false;
+    const Rational bottom =
+        portion.bottom < 0 ? Rational(0) : *r_at(impl_.curves[portion.bottom], s);
+    return *r > bottom && *r < *r_at(impl_.curves[portion.top], s);
+  }
+
+  // the enclosure of curve id, made once per sweep (a reference that growing keeps valid).
+  const detail::IntervalCurve& enclosed(int id) {
+    if (static_cast<std::size_t>(id) >= enclosed_.size()) enclosed_.resize(impl_.curves.size());
+    auto& curve = enclosed_[id];
+    if (!curve) curve.emplace(impl_.curves[id].f);
+    return *curve;
   }
 
   SweptPart& impl_;
@@ -846,8 +1011,14 @@ class Sweep {
   std::vector<ConvexRing> shadows_;
   std::map<std::vector<Rational>, int> known_;             // this sector's curves (register_curve)
   std::map<std::array<std::size_t, 4>, GapConic> conics_;  // (gap_conic)
-  std::map<std::pair<int, int>, std::vector<Algebraic>> crossings_;  // (crossing_roots)
-  std::vector<ConvexRing> umbrae_;                                   // empty: no single umbra
+  std::deque<std::optional<detail::IntervalCurve>> enclosed_;  // by curve id (enclosed)
+  // a crossing polynomial of two curves (crossing_roots), its roots isolated when needed
+  struct Crossing {
+    std::vector<Interval> enclosure;  // of its coefficients
+    std::optional<std::vector<Algebraic>> roots;
+  };
+  std::map<std::pair<int, int>, Crossing> crossings_;
+  std::vector<ConvexRing> umbrae_;  // empty: no single umbra
   std::vector<SweepLine> lines_;
   std::vector<Affine2> rays_;
   // per end of the source, per occluder: its point shadow volume's planes on the face (the

@@ -1,5 +1,6 @@
 #include "pencil.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -176,20 +177,63 @@ Poly Poly::shifted(const Rational& shift) const {
   return Poly(std::move(q));
 }
 
-IntervalCurve::IntervalCurve(const PencilCurve& curve) {
-  for (const Rational& c : curve.num.c) num.push_back(enclosure(c));
-  for (const Rational& c : curve.den.c) den.push_back(enclosure(c));
+std::optional<double> short_between(double low, double high) {
+  const double width = high - low;
+  if (!(low < high) || !std::isfinite(width)) return std::nullopt;
+  // (every step is exact while g is at least the spacing of the doubles near low)
+  for (double g = std::ldexp(1.0, std::ilogb(width)); g > 0; g /= 2) {
+    const double c = (std::floor(low / g) + 1) * g;
+    if (c > low && c < high) return c;
+    if (std::nextafter(low, high) >= high) break;  // adjacent: nothing between
+  }
+  return std::nullopt;
 }
 
+std::vector<Interval> enclosures(const Poly& p) {
+  std::vector<Interval> result;
+  for (const Rational& c : p.c) result.push_back(enclosure(c));
+  return result;
+}
+
+std::vector<Interval> product(const std::vector<Interval>& a, const std::vector<Interval>& b) {
+  if (a.empty() || b.empty()) return {};
+  std::vector<Interval> result(a.size() + b.size() - 1, Interval(0));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) result[i + j] += a[i] * b[j];
+  return result;
+}
+
+std::vector<Interval> difference(const std::vector<Interval>& a, const std::vector<Interval>& b) {
+  std::vector<Interval> result(std::max(a.size(), b.size()), Interval(0));
+  for (std::size_t k = 0; k < a.size(); ++k) result[k] += a[k];
+  for (std::size_t k = 0; k < b.size(); ++k) result[k] -= b[k];
+  return result;
+}
+
+Interval horner(const std::vector<Interval>& c, const Interval& s) {
+  Interval value = 0;
+  for (auto k = c.rbegin(); k != c.rend(); ++k) value = value * s + *k;
+  return value;
+}
+
+bool surely_no_root(const std::vector<Interval>& c, const Interval& s) {
+  const auto holds_zero = [](const Interval& x) { return x.inf() <= 0 && x.sup() >= 0; };
+  if (!holds_zero(horner(c, s))) return true;
+  if (c.size() < 2) return false;  // a zero constant
+  // mean value theorem: p(x) = p(m) + p'(xi) (x - m) for some xi between m and x, in s.
+  const double m = std::clamp(s.inf() / 2 + s.sup() / 2, s.inf(), s.sup());
+  std::vector<Interval> derivative;
+  for (std::size_t k = 1; k < c.size(); ++k) derivative.push_back(c[k] * static_cast<double>(k));
+  return !holds_zero(horner(c, Interval(m)) + horner(derivative, s) * (s - m));
+}
+
+IntervalCurve::IntervalCurve(const PencilCurve& curve)
+    : num(enclosures(curve.num)), den(enclosures(curve.den)) {}
+
 std::optional<Interval> IntervalCurve::r(const Interval& s) const {
-  const auto horner = [&](const std::vector<Interval>& c) {
-    Interval value = 0;
-    for (auto k = c.rbegin(); k != c.rend(); ++k) value = value * s + *k;
-    return value;
-  };
-  const Interval d = horner(den);
+  const Interval d = horner(den, s);
   if (d.inf() <= 0 && d.sup() >= 0) return std::nullopt;
-  return -horner(num) / d;
+  return -horner(num, s) / d;
 }
 
 void Pencil::enclose() {

@@ -48,6 +48,11 @@ Poly exact_quotient(const Poly& p, const Poly& q);
 // continued-fraction walk of the Stern-Brocot tree): short numbers for sample points.
 Rational simplest_between(const Rational& low, const Rational& high);
 
+// returns a double strictly between the doubles low < high with few significant bits (a
+// multiple of the largest power of two that leaves one between them): short numbers for
+// sample points found from intervals; nullopt when no double lies between them.
+std::optional<double> short_between(double low, double high);
+
 using RationalVector2 = ExactKernel::Vector_2;
 
 // a s^2 + b s t + c t^2 + d s + e t + f in frame coordinates (s, t) (a line when a = b = c
@@ -73,6 +78,22 @@ struct PencilCurve {
   Rational r(const Rational& s) const { return -num(s) / den(s); }
   double r(double s) const { return -num(s) / den(s); }
 };
+
+// The enclosures of a polynomial's coefficients (increasing powers), for interval filters.
+std::vector<Interval> enclosures(const Poly& p);
+
+// enclosures of the coefficients of a b and a - b from those of a and b (upward rounding).
+std::vector<Interval> product(const std::vector<Interval>& a, const std::vector<Interval>& b);
+std::vector<Interval> difference(const std::vector<Interval>& a, const std::vector<Interval>& b);
+
+// the enclosure of the polynomial with coefficient enclosures c over s, by Horner's rule
+// (upward rounding).
+Interval horner(const std::vector<Interval>& c, const Interval& s);
+
+// true when the intervals show that the polynomial with coefficient enclosures c has no root
+// in the closed range s (upward rounding): neither its Horner enclosure over s nor its mean
+// value form about a point m of s, p(m) + p'(s) (s - m), holds 0. False decides nothing.
+bool surely_no_root(const std::vector<Interval>& c, const Interval& s);
 
 // The enclosure of a curve of the sweep, for interval filters (upward rounding).
 struct IntervalCurve {

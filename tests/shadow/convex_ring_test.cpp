@@ -8,6 +8,7 @@
 
 #include <CGAL/Polygon_2_algorithms.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -150,6 +151,97 @@ BOOST_AUTO_TEST_CASE(enclosures_hold_the_exact_values) {
     BOOST_TEST(encloses(at[0], exact_point.x()));
     BOOST_TEST(encloses(at[1], exact_point.y()));
   }
+}
+
+// surely_no_root (pencil.h) on polynomials built from their roots: k (s - rho_1) ... (s - rho_m)
+// (s^2 + c) with c > 0, whose real roots are the rational rho_i and nothing else, given by
+// their coefficients' enclosures or by the product of their factors' (product, difference). On
+// random closed ranges with rational ends (some ends at a root), it never certifies a range that
+// holds a root, and it certifies most of the ranges that hold none (a filter that said nothing
+// would fail the count).
+BOOST_AUTO_TEST_CASE(no_root_is_certified_only_where_there_is_none) {
+  std::mt19937 rng(23);
+  std::uniform_int_distribution<int> integer(-60, 60), positive(1, 40), degree(0, 3);
+  int certified = 0, rootless = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    std::vector<Rational> roots;
+    std::vector<Poly> factors{Poly({ratio(positive(rng) * (trial % 3 ? 1 : -1), positive(rng))})};
+    for (int k = 0, m = degree(rng); k < m; ++k) {
+      roots.push_back(ratio(integer(rng), positive(rng)));
+      factors.push_back(Poly::linear(-roots.back(), 1));
+    }
+    if (trial % 2) factors.push_back(Poly({ratio(positive(rng), positive(rng)), 0, 1}));
+    Poly p = factors[0];
+    for (std::size_t k = 1; k < factors.size(); ++k) p = p * factors[k];
+    Rational a = ratio(integer(rng), positive(rng)),
+             b = a + ratio(positive(rng), 4 * positive(rng));
+    if (!roots.empty() && trial % 5 == 0) a = roots[0];  // a range that ends at a root
+    if (!roots.empty() && trial % 7 == 0) b = roots[0];
+    if (b < a) std::swap(a, b);
+    const bool holds = std::any_of(roots.begin(), roots.end(),
+                                   [&](const Rational& r) { return a <= r && r <= b; });
+    bool surely, surely_from_factors;
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      const Interval range(detail::enclosure(a).inf(), detail::enclosure(b).sup());
+      surely = detail::surely_no_root(detail::enclosures(p), range);
+      // the same polynomial from its factors' enclosures (product), less the zero polynomial
+      std::vector<Interval> from_factors = detail::enclosures(factors[0]);
+      for (std::size_t k = 1; k < factors.size(); ++k)
+        from_factors = detail::product(from_factors, detail::enclosures(factors[k]));
+      from_factors = detail::difference(from_factors, std::vector<Interval>(2, Interval(0)));
+      surely_from_factors = detail::surely_no_root(from_factors, range);
+    }
+    if (holds) {
+      BOOST_TEST(!surely, "a root in [" << a << ", " << b << "] of trial " << trial);
+      BOOST_TEST(!surely_from_factors, "a root in [" << a << ", " << b << "] of trial " << trial);
+    }
+    certified += surely_from_factors;
+    rootless += !holds;
+    certified += surely;
+  }
+  BOOST_TEST(certified > rootless * 3 / 2);  // both forms
+  BOOST_TEST_MESSAGE(certified << " of " << 2 * rootless
+                               << " rootless ranges certified (both forms)");
+}
+
+// short_between (pencil.h): strictly between its bounds, a multiple of a power of two at least
+// a quarter of their distance (few significant bits), and nothing between adjacent doubles.
+BOOST_AUTO_TEST_CASE(a_short_double_lies_strictly_between) {
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> value(-1e6, 1e6), exponent(-40, 10);
+  int found = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double low = value(rng) * std::pow(2.0, exponent(rng));
+    double high;
+    switch (trial % 4) {
+      case 0:  // adjacent: nothing between
+        high = std::nextafter(low, HUGE_VAL);
+        break;
+      case 1:  // one double between
+        high = std::nextafter(std::nextafter(low, HUGE_VAL), HUGE_VAL);
+        break;
+      default:
+        high = low + std::abs(value(rng)) * std::pow(2.0, exponent(rng));
+        break;
+    }
+    const auto r = detail::short_between(low, high);
+    if (!(low < high)) {
+      BOOST_TEST(!r);
+      continue;
+    }
+    if (trial % 4 == 0) {
+      BOOST_TEST(!r);
+      continue;
+    }
+    BOOST_REQUIRE(r);
+    ++found;
+    BOOST_TEST((low < *r && *r < high));
+    // a multiple of 2^(e - 2), where 2^e <= high - low (exact: scaling by a power of two)
+    const double unit = std::ldexp(1.0, std::ilogb(high - low) - 2);
+    BOOST_TEST(std::floor(*r / unit) == *r / unit);
+  }
+  BOOST_TEST(found > 14000);
 }
 
 // enclosure() (rational_enclosure.h) holds the exact rational and is at most one ulp wide where
