@@ -1,5 +1,7 @@
 #include "blocked_interval_filter.h"
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <set>
 
@@ -10,10 +12,17 @@ namespace {
 
 enum Side : unsigned { kPQ1 = 1, kPQ2 = 2, kQ1Q2 = 4 };
 
+// Short lists kept inline (a vertex lies on few planes, the clipped triangle has few
+// vertices): this filter runs for most points the sweep labels, and heap lists were a third
+// of its time.
+template <class T>
+using Short = boost::container::small_vector<T, 8>;
+using PlaneIds = boost::container::small_vector<int, 4>;
+
 struct Vertex {
   IntervalPoint x;
-  unsigned sides;       // the triangle's sides it lies on
-  std::vector<int> on;  // the solid's geometric planes it lies on, increasing
+  unsigned sides;  // the triangle's sides it lies on
+  PlaneIds on;     // the solid's geometric planes it lies on, increasing
 };
 
 Interval value(const std::array<Interval, 4>& plane, const IntervalPoint& x) {
@@ -28,13 +37,13 @@ std::optional<int> sign_of(const Interval& v) {
   return std::nullopt;
 }
 
-std::vector<int> common(const std::vector<int>& a, const std::vector<int>& b) {
-  std::vector<int> result;
+PlaneIds common(const PlaneIds& a, const PlaneIds& b) {
+  PlaneIds result;
   std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(result));
   return result;
 }
 
-void add(std::vector<int>& on, int plane) {
+void add(PlaneIds& on, int plane) {
   const auto at = std::lower_bound(on.begin(), on.end(), plane);
   if (at == on.end() || *at != plane) on.insert(at, plane);
 }
@@ -83,7 +92,7 @@ IntervalSolid interval_solid(const RationalSolid& solid) {
     return CGAL::is_zero(plane.a() * x.x() + plane.b() * x.y() + plane.c() * x.z() + plane.d());
   };
   for (std::size_t e = 0; e < solid.edges.size(); ++e) {
-    std::vector<int> ids;
+    PlaneIds ids;
     for (std::size_t k = 0; k < n; ++k)
       if (on_plane(solid.vertices[solid.edges[e][0]], k) &&
           on_plane(solid.vertices[solid.edges[e][1]], k))
@@ -102,10 +111,10 @@ std::optional<BlockedBounds> blocked_bounds(const IntervalSolid& solid, const In
     if (sign && *sign > 0) outside = true;
   }
   if (!outside) return std::nullopt;
-  std::vector<Vertex> polygon{{p, kPQ1 | kPQ2, {}}, {q1, kPQ1 | kQ1Q2, {}}, {q2, kPQ2 | kQ1Q2, {}}};
+  Short<Vertex> polygon{{p, kPQ1 | kPQ2, {}}, {q1, kPQ1 | kQ1Q2, {}}, {q2, kPQ2 | kQ1Q2, {}}};
   for (std::size_t k = 0; k < solid.planes.size() && !polygon.empty(); ++k) {
     const int id = solid.geometric[k];
-    std::vector<int> signs;
+    Short<int> signs;
     for (const Vertex& v : polygon) {
       // on a plane already met (a flat polygon's other face): exactly on it
       if (std::binary_search(v.on.begin(), v.on.end(), id)) {
@@ -116,7 +125,7 @@ std::optional<BlockedBounds> blocked_bounds(const IntervalSolid& solid, const In
       if (!sign) return std::nullopt;
       signs.push_back(*sign);
     }
-    std::vector<Vertex> kept;
+    Short<Vertex> kept;
     const std::size_t n = polygon.size();
     for (std::size_t i = 0; i < n; ++i) {
       const Vertex& a = polygon[i];
@@ -147,7 +156,7 @@ std::optional<BlockedBounds> blocked_bounds(const IntervalSolid& solid, const In
     bool clamp;
     const Vertex* vertex;
   };
-  std::vector<End> ends;
+  Short<End> ends;
   for (const Vertex& v : polygon) {
     if (v.sides & kPQ1) {
       ends.push_back({Interval(0), true, &v});
@@ -178,7 +187,7 @@ std::optional<BlockedBounds> blocked_bounds(const IntervalSolid& solid, const In
   if (!low || !high) return std::nullopt;
   const auto edge_of = [&](const End& end) -> std::optional<int> {
     if (end.clamp) return -1;
-    const std::vector<int>& on = end.vertex->on;
+    const PlaneIds& on = end.vertex->on;
     if (on.size() != 2) return std::nullopt;
     const auto found = solid.edge_of.find({on[0], on[1]});
     if (found == solid.edge_of.end()) return std::nullopt;

@@ -37,6 +37,8 @@ class ConvexRing {
   // the same for a point known by an enclosure only: nullopt when the intervals cannot
   // tell (needs upward rounding, CGAL::Protect_FPU_rounding<true>).
   std::optional<bool> maybe_contains(const std::array<Interval, 2>& at) const;
+  // the enclosures of the vertices' coordinates, in order.
+  const std::vector<std::array<Interval, 2>>& enclosures() const { return approx_; }
 
  private:
   bool outside_box(const std::array<Interval, 2>& at) const;
@@ -85,6 +87,8 @@ class FilteredAffine {
   // the sign at a point known by an enclosure only, or nullopt when the intervals cannot
   // tell (needs upward rounding).
   std::optional<CGAL::Sign> maybe_sign(const std::array<Interval, 2>& at) const;
+  // the enclosures of d, e and f.
+  std::array<Interval, 3> enclosures() const { return {d_, e_, f_}; }
 
  private:
   Affine2 exact_;

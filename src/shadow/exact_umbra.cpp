@@ -312,7 +312,7 @@ class Sweep {
         for (const Point2& p : *occluder.umbra) umbra.push_back(rational_point(p));
       umbrae_.emplace_back(std::move(umbra));
     }
-    collect_lines(occluders);
+    find_w();
   }
 
   // false when the group's occluders surely hide the source together nowhere on the face
@@ -320,6 +320,7 @@ class Sweep {
   bool may_be_joint() const { return !end_shadows_[0].empty(); }
 
   void run(Sector& sector) {
+    if (!lines_collected_) collect_lines();
     const Pencil& pencil = sector.pencil;
     std::vector<Rational> seams{pencil.s_low(), pencil.s_high()};
     auto add_rays = [&](const Poly& rays) {
@@ -456,25 +457,32 @@ class Sweep {
          {detail::enclosure(unit.d), detail::enclosure(unit.e), detail::enclosure(unit.f)}});
   }
 
-  void collect_lines(const std::vector<UmbraOccluder>& occluders) {
+  // the point shadows of the source's ends on the face, kept when the occluders may hide
+  // it together there (W may have interior), else left empty.
+  void find_w() {
+    // W needs two occluders and interior on the face (joint_region.h); without it the
+    // lines that only matter in W are left out and no point is shared.
+    if (prepared_.size() < 2) return;
+    for (const auto& prepared : prepared_)
+      for (int end = 0; end < 2; ++end) {
+        detail::EndShadow volume;
+        for (const RationalPlane3& plane : prepared->ends[end])
+          volume.emplace_back(on_face(face_.frame, plane));
+        end_shadows_[end].push_back(std::move(volume));
+      }
+    if (!detail::may_hide_together(impl_.face, end_shadows_, umbrae_)) end_shadows_ = {};
+  }
+
+  // the lines of the sweep (made when it first runs: a face none of whose groups may hide
+  // the source together is not swept).
+  void collect_lines() {
+    lines_collected_ = true;
     const FaceFrame& frame = face_.frame;
     for (const auto& ring : impl_.face.boundary())
       for (std::size_t k = 0; k < ring.size(); ++k)
         add_line(line_through(ring[k], ring[(k + 1) % ring.size()]), nullptr, false);
-    // W needs two occluders and interior on the face (joint_region.h); without it the
-    // lines that only matter in W are left out and no point is shared.
-    if (occluders.size() >= 2) {
-      for (std::size_t o = 0; o < occluders.size(); ++o)
-        for (int end = 0; end < 2; ++end) {
-          detail::EndShadow volume;
-          for (const RationalPlane3& plane : prepared_[o]->ends[end])
-            volume.emplace_back(on_face(frame, plane));
-          end_shadows_[end].push_back(std::move(volume));
-        }
-      if (!detail::may_hide_together(impl_.face, end_shadows_, umbrae_)) end_shadows_ = {};
-    }
     const bool in_w = !end_shadows_[0].empty();
-    for (std::size_t o = 0; o < occluders.size(); ++o) {
+    for (std::size_t o = 0; o < prepared_.size(); ++o) {
       const ConvexRing* region = &shadows_[o];
       const auto& outer = region->points();
       for (std::size_t k = 0; k < outer.size(); ++k)
@@ -1019,6 +1027,7 @@ class Sweep {
   };
   std::map<std::pair<int, int>, Crossing> crossings_;
   std::vector<ConvexRing> umbrae_;  // empty: no single umbra
+  bool lines_collected_ = false;
   std::vector<SweepLine> lines_;
   std::vector<Affine2> rays_;
   // per end of the source, per occluder: its point shadow volume's planes on the face (the
