@@ -74,9 +74,7 @@ IntervalPoint interval_point(const RationalPoint3& p) {
 IntervalSolid interval_solid(const RationalSolid& solid) {
   IntervalSolid result;
   const std::size_t n = solid.planes.size();
-  for (const RationalPlane3& plane : solid.planes)
-    result.planes.push_back(
-        {enclosure(plane.a()), enclosure(plane.b()), enclosure(plane.c()), enclosure(plane.d())});
+  result.planes = solid.approx_planes;
   // Geometric ids: a plane equal to an earlier one (either orientation) shares its id.
   for (std::size_t k = 0; k < n; ++k) {
     int id = static_cast<int>(k);
@@ -87,15 +85,22 @@ IntervalSolid interval_solid(const RationalSolid& solid) {
     }
     result.geometric.push_back(id);
   }
-  const auto on_plane = [&](const RationalPoint3& x, std::size_t k) {
+  // whether vertex v lies on plane k: off it when the intervals certify a nonzero value,
+  // else exactly.
+  const auto on_plane = [&](std::size_t v, std::size_t k) {
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      const Interval f = value(solid.approx_planes[k], solid.approx_vertices[v]);
+      if (f.inf() > 0 || f.sup() < 0) return false;
+    }
     const RationalPlane3& plane = solid.planes[k];
+    const RationalPoint3& x = solid.vertices[v];
     return CGAL::is_zero(plane.a() * x.x() + plane.b() * x.y() + plane.c() * x.z() + plane.d());
   };
   for (std::size_t e = 0; e < solid.edges.size(); ++e) {
     PlaneIds ids;
     for (std::size_t k = 0; k < n; ++k)
-      if (on_plane(solid.vertices[solid.edges[e][0]], k) &&
-          on_plane(solid.vertices[solid.edges[e][1]], k))
+      if (on_plane(solid.edges[e][0], k) && on_plane(solid.edges[e][1], k))
         add(ids, result.geometric[k]);
     if (ids.size() == 2) result.edge_of[{ids[0], ids[1]}] = static_cast<int>(e);
   }

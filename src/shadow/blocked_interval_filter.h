@@ -25,6 +25,7 @@ struct IntervalSolid {
   std::map<std::pair<int, int>, int> edge_of;  // (smaller id, larger id) -> edge index
 };
 
+// the filter of a solid made by rational_solid (its enclosures filled).
 IntervalSolid interval_solid(const RationalSolid& solid);
 
 // returns the interval enclosure of a rational point.
