@@ -4,8 +4,6 @@
 #include <memory>
 #include <optional>
 
-#include "rational_enclosure.h"
-
 namespace penumbra::detail {
 namespace {
 
