@@ -172,9 +172,12 @@ std::shared_ptr<const UmbraSolid> prepare_umbra_solid(const ConvexPolyhedron& so
   prepared->q2 = exact_value(q2);
   prepared->solid = detail::rational_solid(solid);
   prepared->filter = detail::interval_solid(prepared->solid);
+  // (the solid's planes begin with its faces', in order)
+  const std::vector<RationalPlane3> faces(prepared->solid.planes.begin(),
+                                          prepared->solid.planes.begin() + solid.faces().size());
   for (int end = 0; end < 2; ++end)
-    for (const Plane3& plane : point_shadow_volume(solid, end ? q2 : q1).planes)
-      prepared->ends[end].push_back(exact_value(plane));
+    prepared->ends[end] =
+        exact_point_shadow_planes(solid, prepared->solid.vertices, faces, end ? q2 : q1);
   const RationalVector3 d = prepared->q2 - prepared->q1;
   for (const RationalPoint3& v : prepared->solid.vertices) {
     const RationalVector3 g = CGAL::cross_product(d, v - prepared->q1);
@@ -191,7 +194,7 @@ struct SweptPart {
   bool whole = false;  // no part of the source is visible: the whole face
   detail::FaceRegion face;
   FaceFrame frame;
-  std::vector<Curve> curves;
+  std::deque<Curve> curves;  // (ids index it; a deque grows without copying the rationals)
   std::vector<Sector> sectors;
   std::optional<RationalPoint2> centre;  // x0 when finite
   bool centre_label = false;
@@ -466,6 +469,7 @@ class Sweep {
     for (const auto& prepared : prepared_)
       for (int end = 0; end < 2; ++end) {
         detail::EndShadow volume;
+        volume.reserve(prepared->ends[end].size());
         for (const RationalPlane3& plane : prepared->ends[end])
           volume.emplace_back(on_face(face_.frame, plane));
         end_shadows_[end].push_back(std::move(volume));
@@ -1035,43 +1039,74 @@ class Sweep {
   std::array<std::vector<detail::EndShadow>, 2> end_shadows_;
 };
 
-// The world length of a frame displacement (the frame's axes are orthogonal).
-double world_length(const FaceFrame& frame, double du, double dv) {
-  return std::sqrt(du * du * CGAL::to_double(frame.squared_u()) +
-                   dv * dv * CGAL::to_double(frame.squared_v()));
-}
+// Appends the points of a curve of the sweep within tolerance (world units) of it: each
+// chord's midpoint lies within tolerance of the curve's point at the middle s. Doubles
+// throughout, the curve's and the pencil's coefficients converted once.
+class Densify {
+ public:
+  Densify(const Pencil& pencil, const Curve& curve, const FaceFrame& frame, double tolerance)
+      : pencil_(pencil),
+        num_(doubles(curve.f.num)),
+        den_(doubles(curve.f.den)),
+        straight_(curve.q.straight()),
+        uu_(CGAL::to_double(frame.squared_u())),
+        vv_(CGAL::to_double(frame.squared_v())),
+        tolerance_(tolerance) {}
 
-// appends the points of curve over (s0, s1] (either order), a and b its points at s0 and s1,
-// subdividing until each chord's midpoint lies within tolerance of the curve.
-void densify(const Pencil& pencil, const Curve& curve, const FaceFrame& frame, double s0, double s1,
-             const std::array<double, 2>& a, const std::array<double, 2>& b, double tolerance,
-             std::vector<std::array<double, 2>>& points, int depth) {
-  const double s = (s0 + s1) / 2;
-  const std::array<double, 2> m = pencil.point(s, curve.f.r(s));
-  const double deviation = world_length(frame, m[0] - (a[0] + b[0]) / 2, m[1] - (a[1] + b[1]) / 2);
-  if (curve.q.straight() || deviation <= tolerance || depth > 40) {
-    if (!curve.q.straight() && depth == 0) {
-      // a single chord may miss a bulge between the samples: split once at least.
-      densify(pencil, curve, frame, s0, s, a, m, tolerance, points, depth + 1);
-      densify(pencil, curve, frame, s, s1, m, b, tolerance, points, depth + 1);
+  // appends the points over [s0, s1] (either order; the first point only when points is
+  // empty).
+  void operator()(double s0, double s1, std::vector<std::array<double, 2>>& points) const {
+    const std::array<double, 2> a = at(s0), b = at(s1);
+    if (points.empty()) points.push_back(a);
+    split(s0, s1, a, b, points, 0);
+  }
+
+ private:
+  static std::vector<double> doubles(const Poly& p) {
+    std::vector<double> c;
+    for (const Rational& x : p.c) c.push_back(CGAL::to_double(x));
+    return c;
+  }
+  // as Poly::operator()(double), from the converted coefficients.
+  static double value(const std::vector<double>& c, double s) {
+    double result = 0;
+    for (auto k = c.rbegin(); k != c.rend(); ++k) result = result * s + *k;
+    return result;
+  }
+  std::array<double, 2> at(double s) const {
+    return pencil_.point(s, -value(num_, s) / value(den_, s));
+  }
+  // the world length of a frame displacement (the frame's axes are orthogonal).
+  double world_length(double du, double dv) const {
+    return std::sqrt(du * du * uu_ + dv * dv * vv_);
+  }
+
+  // appends the points over (s0, s1], a and b those at s0 and s1, halving s until each
+  // chord's midpoint lies within tolerance.
+  void split(double s0, double s1, const std::array<double, 2>& a, const std::array<double, 2>& b,
+             std::vector<std::array<double, 2>>& points, int depth) const {
+    const double s = (s0 + s1) / 2;
+    const std::array<double, 2> m = at(s);
+    const double deviation = world_length(m[0] - (a[0] + b[0]) / 2, m[1] - (a[1] + b[1]) / 2);
+    if (straight_ || deviation <= tolerance_ || depth > 40) {
+      if (!straight_ && depth == 0) {
+        // a single chord may miss a bulge between the samples: split once at least.
+        split(s0, s, a, m, points, depth + 1);
+        split(s, s1, m, b, points, depth + 1);
+        return;
+      }
+      points.push_back(b);
       return;
     }
-    points.push_back(b);
-    return;
+    split(s0, s, a, m, points, depth + 1);
+    split(s, s1, m, b, points, depth + 1);
   }
-  densify(pencil, curve, frame, s0, s, a, m, tolerance, points, depth + 1);
-  densify(pencil, curve, frame, s, s1, m, b, tolerance, points, depth + 1);
-}
 
-// appends the points of curve over [s0, s1] (either order; its first point only when points
-// is empty).
-void densify(const Pencil& pencil, const Curve& curve, const FaceFrame& frame, double s0, double s1,
-             double tolerance, std::vector<std::array<double, 2>>& points) {
-  const std::array<double, 2> a = pencil.point(s0, curve.f.r(s0)),
-                              b = pencil.point(s1, curve.f.r(s1));
-  if (points.empty()) points.push_back(a);
-  densify(pencil, curve, frame, s0, s1, a, b, tolerance, points, 0);
-}
+  const Pencil& pencil_;
+  std::vector<double> num_, den_;
+  bool straight_;
+  double uu_, vv_, tolerance_;
+};
 
 UmbraArc arc_of(const Curve& curve) {
   UmbraArc arc;
@@ -1104,8 +1139,8 @@ void trace_boundary(const SweptPart& impl, int sector_index, double tolerance, c
     const bool forward = piece.above == (pencil.r_side() > 0);
     const Algebraic& low = columns[piece.first].low;
     const Algebraic& high = columns[piece.last].high;
-    densify(pencil, impl.curves[id], impl.frame, approximate(forward ? low : high),
-            approximate(forward ? high : low), tolerance, result.arc.points);
+    Densify(pencil, impl.curves[id], impl.frame, tolerance)(
+        approximate(forward ? low : high), approximate(forward ? high : low), result.arc.points);
     result.start = {sector_index, forward ? low : high, id, {}, {}};
     result.end = {sector_index, forward ? high : low, id, {}, {}};
     pieces.push_back(std::move(result));
@@ -1151,6 +1186,7 @@ void trace_boundary(const SweptPart& impl, int sector_index, double tolerance, c
     std::sort(breaks.begin(), breaks.end());
     breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
     std::vector<char> labels[2];
+    std::optional<Algebraic> s_value;  // s as the pieces' ends name it, made once
     if (before) labels[0] = impl.labels_between(*before, values[0], breaks);
     if (after) labels[1] = impl.labels_between(*after, values[1], breaks);
     for (std::size_t k = 0; k + 1 < breaks.size(); ++k) {
@@ -1173,8 +1209,9 @@ void trace_boundary(const SweptPart& impl, int sector_index, double tolerance, c
       const std::array<double, 2> pb = {CGAL::to_double(b.x()), CGAL::to_double(b.y())};
       piece.arc.points = forward ? std::vector<std::array<double, 2>>{pa, pb}
                                  : std::vector<std::array<double, 2>>{pb, pa};
-      const PieceEnd low{sector_index, algebraic(s), -1, breaks[k], s};
-      const PieceEnd high{sector_index, algebraic(s), -1, breaks[k + 1], s};
+      if (!s_value) s_value = algebraic(s);
+      const PieceEnd low{sector_index, *s_value, -1, breaks[k], s};
+      const PieceEnd high{sector_index, *s_value, -1, breaks[k + 1], s};
       piece.start = forward ? low : high;
       piece.end = forward ? high : low;
       pieces.push_back(std::move(piece));

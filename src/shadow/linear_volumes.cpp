@@ -11,21 +11,47 @@ namespace penumbra {
 namespace {
 
 // A point strictly inside the solid (or, for a flat polygon, in its relative
-// interior): strictly on the negative side of every bounding plane built below.
+// interior), the mean of its vertices: strictly on the negative side of every bounding
+// plane built below.
+template <class Point>
+Point inner_point(const std::vector<Point>& vertices) {
+  typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 sum = CGAL::NULL_VECTOR;
+  for (const Point& p : vertices) sum = sum + (p - CGAL::ORIGIN);
+  return CGAL::ORIGIN + sum / static_cast<int>(vertices.size());
+}
+
 Point3 inner_point(const ConvexPolyhedron& solid) {
-  Vector3 sum = CGAL::NULL_VECTOR;
-  for (const Point3& p : solid.vertices()) sum = sum + (p - CGAL::ORIGIN);
-  return CGAL::ORIGIN + sum / static_cast<int>(solid.vertices().size());
+  return inner_point(solid.vertices());
 }
 
 // returns the plane through a, b, c with inside on its negative side.
-Plane3 plane_away_from(const Point3& a, const Point3& b, const Point3& c, const Point3& inside) {
-  const Plane3 plane(a, b, c);
+template <class Point>
+auto plane_away_from(const Point& a, const Point& b, const Point& c, const Point& inside) {
+  const typename CGAL::Kernel_traits<Point>::Kernel::Plane_3 plane(a, b, c);
   return plane.oriented_side(inside) == CGAL::ON_POSITIVE_SIDE ? plane.opposite() : plane;
 }
 
-void add_unique(std::vector<Plane3>& planes, const Plane3& plane) {
+template <class Plane>
+void add_unique(std::vector<Plane>& planes, const Plane& plane) {
   if (std::find(planes.begin(), planes.end(), plane) == planes.end()) planes.push_back(plane);
+}
+
+// point_shadow_volume's planes, built from the solid's vertices and its faces' planes as
+// given (Epeck's, or their exact rational values: the same planes in the same order).
+template <class Point, class Plane>
+std::vector<Plane> shadow_planes(const ConvexPolyhedron& solid, const std::vector<Point>& vertices,
+                                 const std::vector<Plane>& face_planes, const Point3& q,
+                                 const Point& at) {
+  std::vector<Plane> planes;
+  const std::vector<int> loop = contour(solid, q);
+  if (loop.empty()) return planes;
+  const Point inside = inner_point(vertices);
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    add_unique(planes, plane_away_from(at, vertices[loop[i]], vertices[loop[(i + 1) % loop.size()]],
+                                       inside));
+  for (std::size_t f = 0; f < solid.faces().size(); ++f)
+    if (turned_toward(solid.faces()[f], q)) add_unique(planes, face_planes[f]);
+  return planes;
 }
 
 // appends the planes through q and the contour edges from vertex `from` to vertex
@@ -91,17 +117,15 @@ bool OpenVolume::contains(const Point3& x) const {
 }
 
 OpenVolume point_shadow_volume(const ConvexPolyhedron& solid, const Point3& q) {
-  OpenVolume volume;
-  const std::vector<int> loop = contour(solid, q);
-  if (loop.empty()) return volume;
-  const Point3 inside = inner_point(solid);
-  for (std::size_t i = 0; i < loop.size(); ++i)
-    add_unique(volume.planes,
-               plane_away_from(q, solid.vertices()[loop[i]],
-                               solid.vertices()[loop[(i + 1) % loop.size()]], inside));
-  for (const Face& face : solid.faces())
-    if (turned_toward(face, q)) add_unique(volume.planes, face.plane);
-  return volume;
+  std::vector<Plane3> face_planes;
+  for (const Face& face : solid.faces()) face_planes.push_back(face.plane);
+  return {shadow_planes(solid, solid.vertices(), face_planes, q, q)};
+}
+
+std::vector<RationalPlane3> exact_point_shadow_planes(
+    const ConvexPolyhedron& solid, const std::vector<RationalPoint3>& vertices,
+    const std::vector<RationalPlane3>& face_planes, const Point3& q) {
+  return shadow_planes(solid, vertices, face_planes, q, exact_value(q));
 }
 
 std::pair<std::vector<int>, std::vector<int>> tangent_vertices(const ConvexPolyhedron& solid,

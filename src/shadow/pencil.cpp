@@ -238,8 +238,10 @@ std::optional<Interval> IntervalCurve::r(const Interval& s) const {
 
 void Pencil::enclose() {
   const RationalVector2* vectors[4] = {&a0_, &a1_, &b0_, &b1_};
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < 4; ++k) {
     enclosures_[k] = {enclosure(vectors[k]->x()), enclosure(vectors[k]->y())};
+    doubles_[k] = {CGAL::to_double(vectors[k]->x()), CGAL::to_double(vectors[k]->y())};
+  }
 }
 
 RationalPoint2 Pencil::point(const Rational& s, const Rational& r) const {
@@ -258,9 +260,8 @@ std::array<Poly, 3> Pencil::curve_point(const PencilCurve& curve) const {
 }
 
 std::array<double, 2> Pencil::point(double s, double r) const {
-  auto d = [](const Rational& x) { return CGAL::to_double(x); };
-  return {d(a0_.x()) + s * d(a1_.x()) + r * (d(b0_.x()) + s * d(b1_.x())),
-          d(a0_.y()) + s * d(a1_.y()) + r * (d(b0_.y()) + s * d(b1_.y()))};
+  const auto& [a0, a1, b0, b1] = doubles_;
+  return {a0[0] + s * a1[0] + r * (b0[0] + s * b1[0]), a0[1] + s * a1[1] + r * (b0[1] + s * b1[1])};
 }
 
 std::optional<std::pair<Rational, Rational>> Pencil::coordinates(const RationalPoint2& p) const {
@@ -286,12 +287,13 @@ PencilTrace Pencil::trace(const Quadratic2& q) const {
   // q(X + r Y) = c0 + c1 r + c2 r^2 (for a line, c2 = 0 and no products of polynomials).
   const bool line = q.straight();
   const Poly c2 = line ? Poly() : yu * yu * q.a + yu * yv * q.b + yv * yv * q.c;
-  const Poly c1 = line ? yu * q.d + yv * q.e
+  const Poly c1 = line ? Poly::linear(q.d * b0_.x() + q.e * b0_.y(), q.d * b1_.x() + q.e * b1_.y())
                        : xu * yu * (2 * q.a) + (xu * yv + xv * yu) * q.b + xv * yv * (2 * q.c) +
                              yu * q.d + yv * q.e;
-  const Poly c0 = line ? xu * q.d + xv * q.e + Poly::constant(q.f)
-                       : xu * xu * q.a + xu * xv * q.b + xv * xv * q.c + xu * q.d + xv * q.e +
-                             Poly::constant(q.f);
+  const Poly c0 =
+      line ? Poly::linear(q.d * a0_.x() + q.e * a0_.y() + q.f, q.d * a1_.x() + q.e * a1_.y())
+           : xu * xu * q.a + xu * xv * q.b + xv * xv * q.c + xu * q.d + xv * q.e +
+                 Poly::constant(q.f);
   Poly num, den;
   PencilTrace trace;
   if (c2.zero()) {
@@ -316,7 +318,8 @@ PencilTrace Pencil::trace(const Quadratic2& q) const {
   }
   // A common factor of num and den is a line of the pencil on the curve (a degenerate
   // conic); the rest is met once per line.
-  const Poly common = num.zero() ? Poly() : gcd(num, den);
+  // (a nonzero constant has no common factor with anything: no gcd needed)
+  const Poly common = num.degree() >= 1 && den.degree() >= 1 ? gcd(num, den) : Poly();
   if (common.degree() >= 1) {
     trace.rays = common;
     num = exact_quotient(num, common);

@@ -146,6 +146,7 @@ class Pencil {
 
   RationalVector2 a0_, a1_, b0_, b1_;  // A(s) = a0 + s a1, B(s) = b0 + s b1
   std::array<std::array<Interval, 2>, 4> enclosures_;
+  std::array<std::array<double, 2>, 4> doubles_;  // the nearest doubles, for point(double)
   RationalPoint2 origin_;
   Rational s_low_ = 0, s_high_ = 1;
   double jacobian_ = 1;

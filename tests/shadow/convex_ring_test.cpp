@@ -287,4 +287,73 @@ BOOST_AUTO_TEST_CASE(the_enclosure_of_a_rational_holds_it_in_any_rounding) {
   BOOST_TEST_MESSAGE(fast << " enclosures on the fast path, " << exact_ends << " exact");
 }
 
+// Pencil::trace of a line (pencil.h), against each line of the pencil met directly: with
+// A = P(s, 0) and B = P(s, 1) - A from Pencil::point alone, the line d x + e y + f meets the
+// pencil's line s at r = -(line(A)) / (d B_x + e B_y), nowhere when only the denominator is
+// zero, and everywhere when both are. The trace must give that r where its den is nonzero,
+// den zero where they miss, and the s of whole lines as roots of its rays; num and den share
+// no root. Small integers make lines through the centre, along the pencil's direction and
+// through the pencil's lines frequent.
+BOOST_AUTO_TEST_CASE(a_line_traces_where_it_meets_each_pencil_line) {
+  std::mt19937 rng(20261206);
+  std::uniform_int_distribution<int> integer(-3, 3);
+  const RationalPoint2 x0(ratio(1, 3), ratio(-2, 7));
+  const detail::Pencil pencils[] = {
+      detail::Pencil::cone(x0, RationalVector2(1, 0), RationalVector2(0, 1)),
+      detail::Pencil::cone(x0, RationalVector2(-1, 2), RationalVector2(-3, -1)),
+      detail::Pencil::parallel(RationalVector2(2, 1), -3, 3)};
+  int curves = 0, rays = 0, misses = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const detail::Pencil& pencil = pencils[trial % 3];
+    const auto sample = [&](int k) -> Rational { return ratio(k, 4) + ratio(1, 7 + trial % 5); };
+    Affine2 line{integer(rng), integer(rng), integer(rng)};
+    if (trial % 4 == 1) {
+      // the pencil's own line at a sample s
+      const Rational s0 = sample(4 * integer(rng));
+      const RationalPoint2 a = pencil.point(s0, 0);
+      const RationalVector2 b = pencil.point(s0, 1) - a;
+      line = {b.y(), -b.x(), b.x() * a.y() - b.y() * a.x()};
+    } else if (trial % 4 == 3) {
+      if (pencil.finite())
+        line.f = -(line.d * x0.x() + line.e * x0.y());  // through x0
+      else
+        line = {1, -2, integer(rng)};  // along delta
+    }
+    if (CGAL::is_zero(line.d) && CGAL::is_zero(line.e)) continue;
+    const detail::PencilTrace trace = pencil.trace(line.line());
+    if (trace.curve && trace.curve->den.degree() == 1) {
+      const auto& den = trace.curve->den.c;
+      BOOST_TEST(!CGAL::is_zero(trace.curve->num(-den[0] / den[1])));  // no common factor
+    }
+    for (int k = -12; k <= 12; ++k) {
+      const Rational s = sample(k);
+      const RationalPoint2 a = pencil.point(s, 0);
+      const RationalVector2 b = pencil.point(s, 1) - a;
+      const Rational at_a = line(a), slope = line.d * b.x() + line.e * b.y();
+      const bool whole = !trace.rays.zero() && CGAL::is_zero(trace.rays(s));
+      if (CGAL::is_zero(slope) && CGAL::is_zero(at_a)) {
+        BOOST_TEST(whole, "trial " << trial << " s " << s);
+        ++rays;
+      } else if (CGAL::is_zero(slope)) {
+        BOOST_TEST((!trace.curve || CGAL::is_zero(trace.curve->den(s))));
+        ++misses;
+      } else if (!whole) {
+        const Rational r = -at_a / slope;
+        if (!trace.curve) {
+          // only a cone's lines through x0 have no curve: r = 0 there
+          BOOST_TEST((pencil.finite() && CGAL::is_zero(r)), "trial " << trial);
+          continue;
+        }
+        BOOST_TEST_REQUIRE(!CGAL::is_zero(trace.curve->den(s)));
+        BOOST_TEST(trace.curve->r(s) == r, "trial " << trial << " s " << s);
+        ++curves;
+      }
+    }
+  }
+  BOOST_TEST_MESSAGE(curves << " meetings, " << rays << " whole lines, " << misses << " misses");
+  BOOST_TEST(curves > 1000);
+  BOOST_TEST(rays > 20);
+  BOOST_TEST(misses > 20);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

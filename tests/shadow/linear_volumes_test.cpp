@@ -213,4 +213,74 @@ BOOST_AUTO_TEST_CASE(random_occluders_and_tubes_agree_with_the_oracles_and_the_h
   BOOST_TEST(case_b >= 15);
 }
 
+// exact_point_shadow_planes builds U_r in rationals for the exact umbra's prepared solids:
+// its planes must be point_shadow_volume's, coefficient for coefficient and in order (the
+// sweep's lines, hence its outputs, are made from them), and independently of either, a
+// point lies strictly inside every plane exactly when the segment from it to the source
+// is blocked by the solid (section 4.1.1). Small integer grids put sources in the
+// planes of faces and on the lines of edges; flat polygons are two-sided solids.
+BOOST_AUTO_TEST_CASE(exact_point_shadow_planes_are_the_volumes_planes_in_rationals) {
+  std::mt19937 random(20261206);  // fixed: failures must reproduce
+  std::uniform_int_distribution<int> small(-2, 2), far(-4, 4);
+  int solids = 0, flat = 0, empty = 0, in_face_planes = 0, inside = 0;
+  while (solids < 60) {
+    ConvexPolyhedron solid;
+    try {
+      if (solids % 5 == 4) {
+        // a triangle or a square in a random plane through integer points
+        const Point3 a(small(random), small(random), small(random));
+        const Vector3 u(small(random), small(random), small(random));
+        const Vector3 v(small(random), small(random), small(random));
+        if (CGAL::cross_product(u, v) == CGAL::NULL_VECTOR) continue;
+        std::vector<Point3> cycle{a, a + u, a + u + v};
+        if (solids % 10 == 4) cycle.push_back(a + v);
+        solid = ConvexPolyhedron::flat_polygon(cycle);
+      } else {
+        std::vector<Point3> points;
+        for (int i = 0; i < 7; ++i)
+          points.emplace_back(small(random), small(random), small(random));
+        solid = ConvexPolyhedron::hull(points);
+      }
+    } catch (const std::exception&) {
+      continue;
+    }
+    const Point3 q(far(random), far(random), far(random));
+    if (solid.bounded_side(q) != CGAL::ON_UNBOUNDED_SIDE) continue;
+    std::vector<RationalPoint3> vertices;
+    for (const Point3& p : solid.vertices()) vertices.push_back(exact_value(p));
+    std::vector<RationalPlane3> faces;
+    for (const Face& face : solid.faces()) {
+      faces.push_back(exact_value(face.plane));
+      in_face_planes += face.plane.has_on(q);
+    }
+    const std::vector<Plane3> expected = point_shadow_volume(solid, q).planes;
+    const std::vector<RationalPlane3> planes = exact_point_shadow_planes(solid, vertices, faces, q);
+    BOOST_TEST_REQUIRE(planes.size() == expected.size(), "solid " << solids);
+    for (std::size_t k = 0; k < planes.size(); ++k) {
+      const RationalPlane3 e = exact_value(expected[k]);
+      BOOST_TEST((planes[k].a() == e.a() && planes[k].b() == e.b() && planes[k].c() == e.c() &&
+                  planes[k].d() == e.d()),
+                 "solid " << solids << " plane " << k);
+    }
+    for (int s = 0; s < 60; ++s) {
+      const Point3 x = random_point(random, 5);
+      const RationalPoint3 rx = exact_value(x);
+      const bool in = !planes.empty() &&
+                      std::all_of(planes.begin(), planes.end(), [&](const RationalPlane3& plane) {
+                        return plane.oriented_side(rx) == CGAL::ON_NEGATIVE_SIDE;
+                      });
+      BOOST_TEST(in == test::point_blocked(x, q, solid), "solid " << solids);
+      inside += in;
+    }
+    flat += solid.is_flat();
+    empty += planes.empty();
+    ++solids;
+  }
+  BOOST_TEST_MESSAGE("solids " << solids << ", flat " << flat << ", sources in a face's plane "
+                               << in_face_planes << ", points inside " << inside);
+  BOOST_TEST(flat >= 10);
+  BOOST_TEST(in_face_planes >= 5);
+  BOOST_TEST(inside >= 100);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

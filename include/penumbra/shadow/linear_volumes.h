@@ -49,6 +49,13 @@ std::optional<std::pair<Exact, Exact>> line_in_solid(const ConvexPolyhedron& sol
 // (section 4.1.1). Empty planes (no shadow) when no face is turned toward q.
 OpenVolume point_shadow_volume(const ConvexPolyhedron& solid, const Point3& q);
 
+// point_shadow_volume's planes as exact rationals, made in rationals from the solid's
+// vertices and its faces' planes given exactly (in the solid's order): the same planes in
+// the same order, without Epeck's lazy constructions.
+std::vector<RationalPlane3> exact_point_shadow_planes(
+    const ConvexPolyhedron& solid, const std::vector<RationalPoint3>& vertices,
+    const std::vector<RationalPlane3>& face_planes, const Point3& q);
+
 // returns the vertices that may serve as P_L and as P_R (App. A2, eqs. 9-10):
 // vertices common to C1 and C2 whose plane [Q1, Q2, P] (CGAL orientation of Q1, Q2, P, X)
 // has every vertex X of the solid on its non-positive side (P_L) or non-negative side
