@@ -48,6 +48,7 @@ namespace {
 using detail::Affine2;
 using detail::BlockedInterval;
 using detail::ConvexRing;
+using detail::DoubleCurve;
 using detail::Pencil;
 using detail::PencilCurve;
 using detail::Poly;
@@ -172,12 +173,10 @@ std::shared_ptr<const UmbraSolid> prepare_umbra_solid(const ConvexPolyhedron& so
   prepared->q2 = exact_value(q2);
   prepared->solid = detail::rational_solid(solid);
   prepared->filter = detail::interval_solid(prepared->solid);
-  // (the solid's planes begin with its faces', in order)
-  const std::vector<RationalPlane3> faces(prepared->solid.planes.begin(),
-                                          prepared->solid.planes.begin() + solid.faces().size());
+  // (the rational solid's planes begin with its faces', in order)
   for (int end = 0; end < 2; ++end)
-    prepared->ends[end] =
-        exact_point_shadow_planes(solid, prepared->solid.vertices, faces, end ? q2 : q1);
+    prepared->ends[end] = exact_point_shadow_planes(solid, prepared->solid.vertices,
+                                                    prepared->solid.planes, end ? q2 : q1);
   const RationalVector3 d = prepared->q2 - prepared->q1;
   for (const RationalPoint3& v : prepared->solid.vertices) {
     const RationalVector3 g = CGAL::cross_product(d, v - prepared->q1);
@@ -1046,8 +1045,7 @@ class Densify {
  public:
   Densify(const Pencil& pencil, const Curve& curve, const FaceFrame& frame, double tolerance)
       : pencil_(pencil),
-        num_(doubles(curve.f.num)),
-        den_(doubles(curve.f.den)),
+        curve_(curve.f),
         straight_(curve.q.straight()),
         uu_(CGAL::to_double(frame.squared_u())),
         vv_(CGAL::to_double(frame.squared_v())),
@@ -1062,20 +1060,7 @@ class Densify {
   }
 
  private:
-  static std::vector<double> doubles(const Poly& p) {
-    std::vector<double> c;
-    for (const Rational& x : p.c) c.push_back(CGAL::to_double(x));
-    return c;
-  }
-  // as Poly::operator()(double), from the converted coefficients.
-  static double value(const std::vector<double>& c, double s) {
-    double result = 0;
-    for (auto k = c.rbegin(); k != c.rend(); ++k) result = result * s + *k;
-    return result;
-  }
-  std::array<double, 2> at(double s) const {
-    return pencil_.point(s, -value(num_, s) / value(den_, s));
-  }
+  std::array<double, 2> at(double s) const { return pencil_.point(s, curve_.r(s)); }
   // the world length of a frame displacement (the frame's axes are orthogonal).
   double world_length(double du, double dv) const {
     return std::sqrt(du * du * uu_ + dv * dv * vv_);
@@ -1103,7 +1088,7 @@ class Densify {
   }
 
   const Pencil& pencil_;
-  std::vector<double> num_, den_;
+  DoubleCurve curve_;
   bool straight_;
   double uu_, vv_, tolerance_;
 };
@@ -1368,23 +1353,6 @@ std::pair<std::vector<CurvedPolygon>, std::vector<PolygonPieces>> chain(
   return {std::move(polygons), std::move(polygon_pieces)};
 }
 
-// A curve of the sweep in doubles around s = c: r(c + t) for small t.
-struct ShiftedCurve {
-  ShiftedCurve(const PencilCurve& f, const Rational& c) {
-    for (const Rational& x : f.num.shifted(c).c) num.push_back(CGAL::to_double(x));
-    for (const Rational& x : f.den.shifted(c).c) den.push_back(CGAL::to_double(x));
-  }
-  double r(double t) const {
-    const auto horner = [&](const std::vector<double>& p) {
-      double value = 0;
-      for (auto k = p.rbegin(); k != p.rend(); ++k) value = value * t + *k;
-      return value;
-    };
-    return -horner(num) / horner(den);
-  }
-  std::vector<double> num, den;
-};
-
 // the umbra's area in one sector: per column, the integral over s of the cells' extent
 // (adaptive Gauss-Legendre; scale: the face's area, for the absolute tolerance).
 double sector_area(const SweptPart& impl, const Sector& sector, double scale, char kind) {
@@ -1408,11 +1376,11 @@ double sector_area(const SweptPart& impl, const Sector& sector, double scale, ch
     // The curves in t = s - c around the column's sample c, expanded exactly: far from s = 0
     // their values in s lose the digits the quadrature needs.
     const Rational& c = column.sample;
-    std::vector<std::pair<std::optional<ShiftedCurve>, ShiftedCurve>> shifted;
+    std::vector<std::pair<std::optional<DoubleCurve>, DoubleCurve>> shifted;
     for (const auto& [bottom, top] : runs)
       shifted.emplace_back(
-          bottom < 0 ? std::nullopt : std::optional(ShiftedCurve(impl.curves[bottom].f, c)),
-          ShiftedCurve(impl.curves[top].f, c));
+          bottom < 0 ? std::nullopt : std::optional(DoubleCurve::around(impl.curves[bottom].f, c)),
+          DoubleCurve::around(impl.curves[top].f, c));
     const auto extent = [&](double t) {
       double sum = 0;
       auto f = [&](double r) { return pencil.finite() ? r * r / 2 : r; };

@@ -20,10 +20,6 @@ Point inner_point(const std::vector<Point>& vertices) {
   return CGAL::ORIGIN + sum / static_cast<int>(vertices.size());
 }
 
-Point3 inner_point(const ConvexPolyhedron& solid) {
-  return inner_point(solid.vertices());
-}
-
 // returns the plane through a, b, c with inside on its negative side.
 template <class Point>
 auto plane_away_from(const Point& a, const Point& b, const Point& c, const Point& inside) {
@@ -158,7 +154,7 @@ std::pair<OpenVolume, OpenVolume> case_a_volumes(const ConvexPolyhedron& solid, 
                                                  const Point3& q2, const std::vector<int>& contour1,
                                                  const std::vector<int>& contour2, int left,
                                                  int right) {
-  const Point3 inside = inner_point(solid);
+  const Point3 inside = inner_point(solid.vertices());
   const auto& vertices = solid.vertices();
   OpenVolume penumbra, umbra;
   // App. A2 penumbra (i): Q1 with C1 from P_L to P_R; (ii): Q2 with C2 from P_R to

@@ -29,12 +29,6 @@ Rational Poly::operator()(const Rational& s) const {
   return value;
 }
 
-double Poly::operator()(double s) const {
-  double value = 0;
-  for (auto k = c.rbegin(); k != c.rend(); ++k) value = value * s + CGAL::to_double(*k);
-  return value;
-}
-
 Poly Poly::operator+(const Poly& o) const {
   std::vector<Rational> sum(std::max(c.size(), o.c.size()), Rational(0));
   for (std::size_t k = 0; k < c.size(); ++k) sum[k] += c[k];
@@ -227,6 +221,29 @@ bool surely_no_root(const std::vector<Interval>& c, const Interval& s) {
   return !holds_zero(horner(c, Interval(m)) + horner(derivative, s) * (s - m));
 }
 
+namespace {
+
+std::vector<double> nearest_doubles(const Poly& p) {
+  std::vector<double> c;
+  for (const Rational& x : p.c) c.push_back(CGAL::to_double(x));
+  return c;
+}
+
+double horner(const std::vector<double>& c, double t) {
+  double value = 0;
+  for (auto k = c.rbegin(); k != c.rend(); ++k) value = value * t + *k;
+  return value;
+}
+
+}  // namespace
+
+DoubleCurve::DoubleCurve(const Poly& num_, const Poly& den_)
+    : num(nearest_doubles(num_)), den(nearest_doubles(den_)) {}
+
+double DoubleCurve::r(double t) const {
+  return -horner(num, t) / horner(den, t);
+}
+
 IntervalCurve::IntervalCurve(const PencilCurve& curve)
     : num(enclosures(curve.num)), den(enclosures(curve.den)) {}
 
@@ -282,18 +299,19 @@ std::optional<std::pair<Rational, Rational>> Pencil::coordinates(const RationalP
 }
 
 PencilTrace Pencil::trace(const Quadratic2& q) const {
-  const Poly xu = Poly::linear(a0_.x(), a1_.x()), xv = Poly::linear(a0_.y(), a1_.y());
-  const Poly yu = Poly::linear(b0_.x(), b1_.x()), yv = Poly::linear(b0_.y(), b1_.y());
-  // q(X + r Y) = c0 + c1 r + c2 r^2 (for a line, c2 = 0 and no products of polynomials).
-  const bool line = q.straight();
-  const Poly c2 = line ? Poly() : yu * yu * q.a + yu * yv * q.b + yv * yv * q.c;
-  const Poly c1 = line ? Poly::linear(q.d * b0_.x() + q.e * b0_.y(), q.d * b1_.x() + q.e * b1_.y())
-                       : xu * yu * (2 * q.a) + (xu * yv + xv * yu) * q.b + xv * yv * (2 * q.c) +
-                             yu * q.d + yv * q.e;
-  const Poly c0 =
-      line ? Poly::linear(q.d * a0_.x() + q.e * a0_.y() + q.f, q.d * a1_.x() + q.e * a1_.y())
-           : xu * xu * q.a + xu * xv * q.b + xv * xv * q.c + xu * q.d + xv * q.e +
-                 Poly::constant(q.f);
+  // q(X + r Y) = c0 + c1 r + c2 r^2; for a line c2 = 0 and c0, c1 are affine in s.
+  Poly c0, c1, c2;
+  if (q.straight()) {
+    c1 = Poly::linear(q.d * b0_.x() + q.e * b0_.y(), q.d * b1_.x() + q.e * b1_.y());
+    c0 = Poly::linear(q.d * a0_.x() + q.e * a0_.y() + q.f, q.d * a1_.x() + q.e * a1_.y());
+  } else {
+    const Poly xu = Poly::linear(a0_.x(), a1_.x()), xv = Poly::linear(a0_.y(), a1_.y());
+    const Poly yu = Poly::linear(b0_.x(), b1_.x()), yv = Poly::linear(b0_.y(), b1_.y());
+    c2 = yu * yu * q.a + yu * yv * q.b + yv * yv * q.c;
+    c1 =
+        xu * yu * (2 * q.a) + (xu * yv + xv * yu) * q.b + xv * yv * (2 * q.c) + yu * q.d + yv * q.e;
+    c0 = xu * xu * q.a + xu * xv * q.b + xv * xv * q.c + xu * q.d + xv * q.e + Poly::constant(q.f);
+  }
   Poly num, den;
   PencilTrace trace;
   if (c2.zero()) {
@@ -317,8 +335,7 @@ PencilTrace Pencil::trace(const Quadratic2& q) const {
     den = c2;
   }
   // A common factor of num and den is a line of the pencil on the curve (a degenerate
-  // conic); the rest is met once per line.
-  // (a nonzero constant has no common factor with anything: no gcd needed)
+  // conic); the rest is met once per line. (A constant has none: no gcd needed.)
   const Poly common = num.degree() >= 1 && den.degree() >= 1 ? gcd(num, den) : Poly();
   if (common.degree() >= 1) {
     trace.rays = common;

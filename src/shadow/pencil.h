@@ -30,7 +30,6 @@ struct Poly {
   bool zero() const { return c.empty(); }
   int degree() const { return static_cast<int>(c.size()) - 1; }
   Rational operator()(const Rational& s) const;
-  double operator()(double s) const;
   Poly operator+(const Poly& o) const;
   Poly operator-(const Poly& o) const;
   Poly operator*(const Poly& o) const;
@@ -76,7 +75,20 @@ struct Affine2 {
 struct PencilCurve {
   Poly num, den;
   Rational r(const Rational& s) const { return -num(s) / den(s); }
-  double r(double s) const { return -num(s) / den(s); }
+};
+
+// A curve of the sweep with its coefficients rounded to the nearest doubles once, for the
+// many evaluations of densifying and quadrature: r(t) = -num(t) / den(t) by Horner's rule.
+struct DoubleCurve {
+  DoubleCurve(const Poly& num, const Poly& den);
+  explicit DoubleCurve(const PencilCurve& curve) : DoubleCurve(curve.num, curve.den) {}
+  // the curve in t = s - c around s = c (Taylor's shift made exactly, then rounded), so
+  // that a pencil whose s lies far from 0 keeps its digits.
+  static DoubleCurve around(const PencilCurve& curve, const Rational& c) {
+    return {curve.num.shifted(c), curve.den.shifted(c)};
+  }
+  double r(double t) const;
+  std::vector<double> num, den;
 };
 
 // The enclosures of a polynomial's coefficients (increasing powers), for interval filters.

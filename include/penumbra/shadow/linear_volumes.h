@@ -50,8 +50,8 @@ std::optional<std::pair<Exact, Exact>> line_in_solid(const ConvexPolyhedron& sol
 OpenVolume point_shadow_volume(const ConvexPolyhedron& solid, const Point3& q);
 
 // point_shadow_volume's planes as exact rationals, made in rationals from the solid's
-// vertices and its faces' planes given exactly (in the solid's order): the same planes in
-// the same order, without Epeck's lazy constructions.
+// vertices and its faces' planes given exactly (face_planes[f] the plane of face f; more
+// may follow): the same planes in the same order, without Epeck's lazy constructions.
 std::vector<RationalPlane3> exact_point_shadow_planes(
     const ConvexPolyhedron& solid, const std::vector<RationalPoint3>& vertices,
     const std::vector<RationalPlane3>& face_planes, const Point3& q);
