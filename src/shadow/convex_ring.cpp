@@ -45,6 +45,20 @@ bool ConvexRing::contains(const Probe& p) const {
   return true;
 }
 
+bool ConvexRing::strictly_contains(const Probe& p) const {
+  if (empty() || outside_box(p.at)) return false;
+  const std::size_t n = points_.size();
+  CGAL::Protect_FPU_rounding<true> upward;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Interval t = turn(k, p.at);
+    if (t.sup() <= 0) return false;
+    if (t.inf() > 0) continue;
+    if (CGAL::orientation(points_[k], points_[(k + 1) % n], p.point) != CGAL::LEFT_TURN)
+      return false;
+  }
+  return true;
+}
+
 std::optional<bool> ConvexRing::maybe_contains(const std::array<Interval, 2>& at) const {
   if (empty() || outside_box(at)) return false;
   bool certain = true;

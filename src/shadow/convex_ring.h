@@ -37,8 +37,14 @@ class ConvexRing {
   // the same for a point known by an enclosure only: nullopt when the intervals cannot
   // tell (needs upward rounding, CGAL::Protect_FPU_rounding<true>).
   std::optional<bool> maybe_contains(const std::array<Interval, 2>& at) const;
+  // true when the point lies in the open ring (inside, off every edge).
+  bool strictly_contains(const Probe& p) const;
   // the enclosures of the vertices' coordinates, in order.
   const std::vector<std::array<Interval, 2>>& enclosures() const { return approx_; }
+  // a box that holds the ring (empty ring: the point 0, 0).
+  std::array<Interval, 2> box() const {
+    return {Interval(low_[0], high_[0]), Interval(low_[1], high_[1])};
+  }
 
  private:
   bool outside_box(const std::array<Interval, 2>& at) const;

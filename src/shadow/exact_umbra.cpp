@@ -20,14 +20,17 @@
 #include <deque>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <stdexcept>
 #include <tuple>
 
 #include "algebraic.h"
 #include "blocked_interval.h"
 #include "blocked_interval_filter.h"
+#include "box_grid.h"
 #include "convex_ring.h"
 #include "exact_corner.h"
 #include "joint_region.h"
@@ -86,11 +89,16 @@ Affine2 line_through(const RationalPoint2& a, const RationalPoint2& b) {
   return {a.y() - b.y(), b.x() - a.x(), a.x() * b.y() - a.y() * b.x()};
 }
 
-// Where a line of the sweep matters (closed sets): in ring (anywhere in the face when
-// null), and also in the region W of joint occlusion when in_w.
+// Where a line of the sweep matters (closed sets, Sweep::relevant): the face's boundary
+// anywhere in the face (ring null); an edge of occluder owner's whole shadow (ring) where it
+// bounds the union of the shadows, or in W; an edge of its single umbra (ring) anywhere
+// outside the other umbrae; when in_w, in W within owner's whole shadow (ring). None matters
+// strictly inside a single umbra.
 struct LineRole {
+  enum Kind : char { kFace, kShadow, kUmbra, kJoint };
   const ConvexRing* ring;
-  bool in_w;
+  Kind kind;
+  std::size_t owner;
 };
 
 struct SweepLine {
@@ -314,6 +322,9 @@ class Sweep {
         for (const Point2& p : *occluder.umbra) umbra.push_back(rational_point(p));
       umbrae_.emplace_back(std::move(umbra));
     }
+    std::vector<std::array<Interval, 2>> boxes;
+    for (const ConvexRing& shadow : shadows_) boxes.push_back(shadow.box());
+    shadow_index_ = detail::BoxGrid(boxes);
     find_w();
   }
 
@@ -343,9 +354,23 @@ class Sweep {
     for (const Affine2& ray : rays_) add_rays(pencil.trace(ray.line()).rays);
     for (const RationalPoint2& p : impl_.face.points())
       if (const auto c = pencil.coordinates(p)) seams.push_back(c->first);
-    // Crossings of two lines inside the face and inside a region of each.
-    for (std::size_t i = 0; i < line_curves.size(); ++i)
-      for (std::size_t j = i + 1; j < line_curves.size(); ++j) {
+    // Crossings of two lines inside the face and inside a region of each: only lines whose
+    // reaches meet (in s, then in their boxes) can cross where both matter. Taken in
+    // increasing low s, each line meets those after it up to its high s.
+    std::vector<Reach> reaches;
+    {
+      std::map<const ConvexRing*, Reach> rings;
+      for (std::size_t k : line_curves) reaches.push_back(reach(pencil, lines_[k], rings));
+    }
+    std::vector<std::size_t> by_low(line_curves.size());
+    std::iota(by_low.begin(), by_low.end(), std::size_t(0));
+    std::sort(by_low.begin(), by_low.end(),
+              [&](std::size_t a, std::size_t b) { return reaches[a].low < reaches[b].low; });
+    for (std::size_t x = 0; x < by_low.size(); ++x)
+      for (std::size_t y = x + 1;
+           y < by_low.size() && reaches[by_low[y]].low <= reaches[by_low[x]].high; ++y) {
+        const std::size_t i = by_low[x], j = by_low[y];
+        if (reaches[i].apart(reaches[j])) continue;
         if (surely_apart(lines_[line_curves[i]], lines_[line_curves[j]])) continue;
         const Affine2& a = lines_[line_curves[i]].line;
         const Affine2& b = lines_[line_curves[j]].line;
@@ -374,42 +399,148 @@ class Sweep {
       line_ids.push_back(register_curve(line_traces[k], lines_[line_curves[k]].line.line(), false));
       line_enclosures.emplace_back(line_traces[k]);
     }
-    for (std::size_t k = 0; k + 1 < seams.size(); ++k)
-      slab(sector, k, line_curves, line_ids, line_enclosures);
+    // Each slab asks only the lines whose reach in s holds its middle (the middles increase).
+    std::vector<std::size_t> active, here;
+    std::size_t next = 0;
+    for (std::size_t k = 0; k + 1 < seams.size(); ++k) {
+      const Rational middle = detail::simplest_between(seams[k], seams[k + 1]);
+      const Interval m = detail::enclosure(middle);
+      for (; next < by_low.size() && reaches[by_low[next]].low <= m.sup(); ++next)
+        active.push_back(by_low[next]);
+      active.erase(std::remove_if(active.begin(), active.end(),
+                                  [&](std::size_t i) { return reaches[i].high < m.inf(); }),
+                   active.end());
+      here = active;
+      std::sort(here.begin(), here.end());
+      slab(sector, k, middle, here, line_curves, line_ids, line_enclosures);
+    }
   }
 
  private:
   // true when p lies in two occluders' whole shadows and both ends of the source are hidden
   // from it, each by some occluder (closed sets): only there can occluders hide the whole
   // source together (the sweep's region W). Each set is bounded by lines of the sweep.
+  // (An occluder's point shadows lie in its whole shadow: only those holding p are asked.)
   bool shared(const Probe& p) const {
-    int count = 0;
-    for (const auto& shadow : shadows_)
-      if (shadow.contains(p) && ++count == 2) break;
-    if (count < 2) return false;
+    if (end_shadows_[0].empty()) return false;
+    const std::vector<std::size_t> under = holding(p);
+    if (under.size() < 2) return false;
     for (const auto& hidden : end_shadows_)
-      if (std::none_of(
-              hidden.begin(), hidden.end(), [&](const std::vector<detail::FilteredAffine>& volume) {
-                return !volume.empty() && std::all_of(volume.begin(), volume.end(),
-                                                      [&](const detail::FilteredAffine& f) {
-                                                        return f.sign(p) != CGAL::POSITIVE;
-                                                      });
-              }))
+      if (std::none_of(under.begin(), under.end(), [&](std::size_t k) {
+            const detail::EndShadow& volume = hidden[k];
+            return !volume.empty() &&
+                   std::all_of(volume.begin(), volume.end(), [&](const detail::FilteredAffine& f) {
+                     return f.sign(p) != CGAL::POSITIVE;
+                   });
+          }))
         return false;
     return true;
   }
 
+  // the occluders whose whole shadows' boxes meet the enclosure at, increasing: the only ones
+  // whose whole shadows, single umbrae and point shadows can hold a point there.
+  std::vector<std::size_t> near(const std::array<Interval, 2>& at) const {
+    std::vector<std::size_t> result;
+    shadow_index_.query(at, result);
+    return result;
+  }
+
+  // the occluders whose whole shadows hold p (closed), increasing.
+  std::vector<std::size_t> holding(const Probe& p) const {
+    std::vector<std::size_t> result = near(p.at);
+    result.erase(std::remove_if(result.begin(), result.end(),
+                                [&](std::size_t k) { return !shadows_[k].contains(p); }),
+                 result.end());
+    return result;
+  }
+
+  // true when the line matters at point (LineRole). Strictly inside a single umbra every cell
+  // around is umbra; strictly inside another occluder's whole shadow and outside W an edge of
+  // a whole shadow has shadow on both sides, and the label there (penumbra or umbra) does not
+  // depend on it. Where a line's relevance changes it crosses a line that matters there: a
+  // seam of the sweep.
   bool relevant(const SweepLine& line, const RationalPoint2& point) const {
     const Probe p(point);
     if (!impl_.face.contains(p)) return false;
-    std::optional<bool> in_w;
+    std::optional<bool> in_w, in_umbra;
+    std::optional<std::vector<std::size_t>> around;
+    const auto inside = [&](const std::vector<ConvexRing>& rings, std::size_t except) {
+      if (!around) around = near(p.at);
+      return std::any_of(around->begin(), around->end(), [&](std::size_t k) {
+        return k != except && rings[k].strictly_contains(p);
+      });
+    };
     for (const LineRole& role : line.roles) {
-      if (role.ring && !role.ring->contains(p)) continue;
-      if (!role.in_w) return true;
+      if (role.kind == LineRole::kFace) return true;
+      if (!role.ring->contains(p)) continue;
+      if (!in_umbra) in_umbra = inside(umbrae_, prepared_.size());
+      if (*in_umbra) return false;
+      if (role.kind == LineRole::kUmbra) return true;
+      if (role.kind == LineRole::kShadow && !inside(shadows_, role.owner)) return true;
       if (!in_w) in_w = shared(p);
       if (*in_w) return true;
     }
     return false;
+  }
+
+  // Where a line of a sector can matter: the closed range of s over the rings of its roles and
+  // the box of those rings, enclosed in doubles (the whole plane for a role anywhere in the
+  // face; all s for a ring not inside the sector's closed cone).
+  struct Reach {
+    static constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    double low = kInfinity, high = -kInfinity;  // s
+    double box[2][2] = {{kInfinity, -kInfinity}, {kInfinity, -kInfinity}};
+    // true when the boxes do not meet.
+    bool apart(const Reach& other) const {
+      for (int axis = 0; axis < 2; ++axis)
+        if (box[axis][1] < other.box[axis][0] || other.box[axis][1] < box[axis][0]) return true;
+      return false;
+    }
+    void add(const Reach& other) {
+      low = std::min(low, other.low);
+      high = std::max(high, other.high);
+      for (int axis = 0; axis < 2; ++axis) {
+        box[axis][0] = std::min(box[axis][0], other.box[axis][0]);
+        box[axis][1] = std::max(box[axis][1], other.box[axis][1]);
+      }
+    }
+  };
+
+  // the reach of a ring: within the closed cone (or across the parallel lines), s over a
+  // convex ring runs between its values at the vertices. rings keeps those made.
+  Reach reach(const Pencil& pencil, const SweepLine& line,
+              std::map<const ConvexRing*, Reach>& rings) const {
+    Reach result;
+    for (const LineRole& role : line.roles) {
+      if (!role.ring) {
+        Reach everywhere;
+        everywhere.low = -Reach::kInfinity;
+        everywhere.high = Reach::kInfinity;
+        for (auto& axis : everywhere.box) axis[0] = -Reach::kInfinity, axis[1] = Reach::kInfinity;
+        return everywhere;
+      }
+      auto found = rings.find(role.ring);
+      if (found == rings.end()) {
+        Reach ring;
+        const auto box = role.ring->box();
+        for (int axis = 0; axis < 2; ++axis)
+          ring.box[axis][0] = box[axis].inf(), ring.box[axis][1] = box[axis].sup();
+        for (const RationalPoint2& v : role.ring->points()) {
+          const auto c = pencil.coordinates(v);
+          if (!c) {
+            ring.low = -Reach::kInfinity;
+            ring.high = Reach::kInfinity;
+            break;
+          }
+          const Interval s = detail::enclosure(c->first);
+          ring.low = std::min(ring.low, s.inf());
+          ring.high = std::max(ring.high, s.sup());
+        }
+        found = rings.emplace(role.ring, ring).first;
+      }
+      result.add(found->second);
+    }
+    return result;
   }
 
   // true when the intervals show that the lines do not cross where both matter.
@@ -443,19 +574,19 @@ class Sweep {
     });
   }
 
-  void add_line(const Affine2& line, const ConvexRing* ring, bool in_w) {
+  void add_line(const Affine2& line, const LineRole& role) {
     if (CGAL::is_zero(line.d) && CGAL::is_zero(line.e)) return;
     // normalise: the first nonzero of (d, e) is 1, so equal lines compare equal.
     const Rational k = CGAL::is_zero(line.d) ? line.e : line.d;
     const Affine2 unit{line.d / k, line.e / k, line.f / k};
     for (SweepLine& known : lines_)
       if (known.line.d == unit.d && known.line.e == unit.e && known.line.f == unit.f) {
-        known.roles.push_back({ring, in_w});
+        known.roles.push_back(role);
         return;
       }
     lines_.push_back(
         {unit,
-         {{ring, in_w}},
+         {role},
          {detail::enclosure(unit.d), detail::enclosure(unit.e), detail::enclosure(unit.f)}});
   }
 
@@ -483,25 +614,27 @@ class Sweep {
     const FaceFrame& frame = face_.frame;
     for (const auto& ring : impl_.face.boundary())
       for (std::size_t k = 0; k < ring.size(); ++k)
-        add_line(line_through(ring[k], ring[(k + 1) % ring.size()]), nullptr, false);
+        add_line(line_through(ring[k], ring[(k + 1) % ring.size()]), {nullptr, LineRole::kFace, 0});
     const bool in_w = !end_shadows_[0].empty();
     for (std::size_t o = 0; o < prepared_.size(); ++o) {
       const ConvexRing* region = &shadows_[o];
       const auto& outer = region->points();
       for (std::size_t k = 0; k < outer.size(); ++k)
-        add_line(line_through(outer[k], outer[(k + 1) % outer.size()]), region, false);
+        add_line(line_through(outer[k], outer[(k + 1) % outer.size()]),
+                 {region, LineRole::kShadow, o});
       const ConvexRing* umbra = &umbrae_[o];
       const auto& inner = umbra->points();
       for (std::size_t k = 0; k < inner.size(); ++k)
-        add_line(line_through(inner[k], inner[(k + 1) % inner.size()]), umbra, false);
+        add_line(line_through(inner[k], inner[(k + 1) % inner.size()]),
+                 {umbra, LineRole::kUmbra, o});
       // The rest only matters in W.
       if (!in_w) continue;
       const UmbraSolid& prepared = *prepared_[o];
       for (int end = 0; end < 2; ++end)
         for (const detail::FilteredAffine& f : end_shadows_[end][o])
-          add_line(f.exact(), region, true);
+          add_line(f.exact(), {region, LineRole::kJoint, o});
       for (const RationalPlane3& plane : prepared.solid.planes)
-        add_line(on_face(frame, plane), region, true);
+        add_line(on_face(frame, plane), {region, LineRole::kJoint, o});
       for (const RationalPlane3& ray : prepared.rays) rays_.push_back(on_face(frame, ray));
     }
   }
@@ -537,25 +670,27 @@ class Sweep {
     const auto in_face = impl_.face.maybe_contains(at);
     if (!in_face) return std::nullopt;
     if (!*in_face) return kLit;
+    const std::vector<std::size_t> candidates = near(at);
     std::vector<std::size_t> under;  // the occluders whose whole shadows hold the point
-    for (std::size_t k = 0; k < shadows_.size(); ++k) {
+    for (std::size_t k : candidates) {
       const auto in = shadows_[k].maybe_contains(at);
       if (!in) return std::nullopt;
       if (*in) under.push_back(k);
     }
     if (under.empty()) return kLit;
     bool unsure = false;
-    for (const ConvexRing& umbra : umbrae_) {
-      const auto in = umbra.maybe_contains(at);
+    for (std::size_t k : candidates) {
+      const auto in = umbrae_[k].maybe_contains(at);
       if (in && *in) return kUmbra;
       unsure = unsure || !in;
     }
     if (unsure) return std::nullopt;
     // shared(): both ends hidden, each by some occluder
-    if (under.size() < 2) return kPenumbra;
+    if (under.size() < 2 || end_shadows_[0].empty()) return kPenumbra;
     for (const auto& hidden : end_shadows_) {
       bool any = false;
-      for (const detail::EndShadow& volume : hidden) {
+      for (std::size_t k : under) {
+        const detail::EndShadow& volume = hidden[k];
         if (volume.empty()) continue;
         std::optional<bool> all = true;
         for (const detail::FilteredAffine& f : volume) {
@@ -593,11 +728,10 @@ class Sweep {
   Label label_of(const RationalPoint2& point) {
     const Probe p(point);
     if (!impl_.face.contains(p)) return kLit;
-    if (std::none_of(shadows_.begin(), shadows_.end(),
-                     [&](const ConvexRing& shadow) { return shadow.contains(p); }))
-      return kLit;
-    if (std::any_of(umbrae_.begin(), umbrae_.end(),
-                    [&](const ConvexRing& umbra) { return umbra.contains(p); }))
+    const std::vector<std::size_t> under = holding(p);
+    if (under.empty()) return kLit;
+    if (std::any_of(under.begin(), under.end(),
+                    [&](std::size_t k) { return umbrae_[k].contains(p); }))
       return kUmbra;
     if (!shared(p) || !covered(p)) return kPenumbra;
     impl_.joint = true;
@@ -613,13 +747,13 @@ class Sweep {
       const IntervalPoint at = detail::interval_point(x);
       std::vector<detail::BlockedBounds> bounds(prepared_.size());
       bool certain = true;
-      for (std::size_t k = 0; k < prepared_.size() && certain; ++k) {
-        if (!shadows_[k].contains(p)) continue;
+      for (std::size_t k : holding(p)) {
         const auto b = detail::blocked_bounds(prepared_[k]->filter, at, q1i_, q2i_);
-        if (b)
-          bounds[k] = *b;
-        else
+        if (!b) {
           certain = false;
+          break;
+        }
+        bounds[k] = *b;
       }
       if (certain)
         if (const auto covers = detail::covers_source(bounds)) return *covers;
@@ -633,8 +767,7 @@ class Sweep {
     const RationalPoint3 x = world(p.point);
     const IntervalPoint at = detail::interval_point(x);  // (enclosures are outward in any rounding)
     std::vector<BlockedInterval> result(prepared_.size());
-    for (std::size_t k = 0; k < prepared_.size(); ++k) {
-      if (!shadows_[k].contains(p)) continue;
+    for (std::size_t k : holding(p)) {
       std::optional<detail::BlockedBounds> b;
       {
         CGAL::Protect_FPU_rounding<true> upward;
@@ -656,8 +789,7 @@ class Sweep {
   std::vector<BlockedInterval> blocked(const Probe& p) const {
     std::optional<RationalPoint3> x;
     std::vector<BlockedInterval> result(prepared_.size());
-    for (std::size_t k = 0; k < prepared_.size(); ++k) {
-      if (!shadows_[k].contains(p)) continue;
+    for (std::size_t k : holding(p)) {
       if (!x) x = world(p.point);
       result[k] = detail::blocked_interval(solid(k), *x, q1_, q2_);
     }
@@ -745,18 +877,21 @@ class Sweep {
   };
 
   // sweeps the slab between the seams seam and seam + 1 of the sector.
-  void slab(Sector& sector, std::size_t seam, const std::vector<std::size_t>& line_curves,
+  // middle: the slab's sample s; active: the lines (positions in line_curves, increasing) that
+  // may matter there.
+  void slab(Sector& sector, std::size_t seam, const Rational& middle,
+            const std::vector<std::size_t>& active, const std::vector<std::size_t>& line_curves,
             const std::vector<int>& line_ids,
             const std::vector<detail::IntervalCurve>& line_enclosures) {
     const Pencil& pencil = sector.pencil;
     const Rational &sa = sector.seams[seam], &sb = sector.seams[seam + 1];
-    const Rational middle = detail::simplest_between(sa, sb);
     // The lines that matter on this slab, in increasing r.
     std::vector<int> straight;
     std::vector<Rational> below;  // a point r below each line and above the one before
-    if (!lines_by_intervals(pencil, middle, line_curves, line_ids, line_enclosures, straight,
-                            below))
-      lines_exactly(pencil, middle, line_curves, line_ids, line_enclosures, straight, below);
+    if (!lines_by_intervals(pencil, middle, active, line_curves, line_ids, line_enclosures,
+                            straight, below))
+      lines_exactly(pencil, middle, active, line_curves, line_ids, line_enclosures, straight,
+                    below);
 
     // The conics of each piece between consecutive lines.
     std::vector<Portion> portions;
@@ -770,11 +905,12 @@ class Sweep {
       Portion portion;
       portion.bottom = k == 0 ? -1 : straight[k - 1];
       portion.top = straight[k];
-      for (std::size_t j = 0; j < intervals.size(); ++j)
-        for (std::size_t i = 0; i < intervals.size(); ++i) {
-          if (i == j || intervals[j].kind != BlockedInterval::Kind::interval ||
-              intervals[i].kind != BlockedInterval::Kind::interval)
-            continue;
+      std::vector<std::size_t> hiding;  // the occluders that hide an interval from there
+      for (std::size_t k = 0; k < intervals.size(); ++k)
+        if (intervals[k].kind == BlockedInterval::Kind::interval) hiding.push_back(k);
+      for (std::size_t j : hiding)
+        for (std::size_t i : hiding) {
+          if (i == j) continue;
           if (intervals[j].high_edge < 0 || intervals[i].low_edge < 0) continue;
           const GapConic& conic =
               gap_conic(pencil, j, intervals[j].high_edge, i, intervals[i].low_edge);
@@ -827,12 +963,13 @@ class Sweep {
   // The lines of the slab that matter at its middle s, by increasing distinct r, and a point
   // r below each and above the one before (below the first: above the centre, if finite).
   void lines_exactly(const Pencil& pencil, const Rational& middle,
+                     const std::vector<std::size_t>& active,
                      const std::vector<std::size_t>& line_curves, const std::vector<int>& line_ids,
                      const std::vector<detail::IntervalCurve>& line_enclosures,
                      std::vector<int>& straight, std::vector<Rational>& below) const {
     std::vector<std::pair<Rational, int>> ordered;
     const Interval enclosed_middle = detail::enclosure(middle);
-    for (std::size_t k = 0; k < line_curves.size(); ++k) {
+    for (std::size_t k : active) {
       if (surely_irrelevant(pencil, lines_[line_curves[k]], line_enclosures[k], enclosed_middle))
         continue;
       const auto r = r_at(impl_.curves[line_ids[k]], middle);
@@ -857,6 +994,7 @@ class Sweep {
   // cannot tell), the points r doubles with few bits: false, with nothing made, when the
   // enclosures of two values overlap, one holds a pole, or one around a finite centre holds 0.
   bool lines_by_intervals(const Pencil& pencil, const Rational& middle,
+                          const std::vector<std::size_t>& active,
                           const std::vector<std::size_t>& line_curves,
                           const std::vector<int>& line_ids,
                           const std::vector<detail::IntervalCurve>& line_enclosures,
@@ -864,7 +1002,7 @@ class Sweep {
     CGAL::Protect_FPU_rounding<true> upward;
     const Interval at_s = detail::enclosure(middle);
     std::vector<std::pair<Interval, int>> ordered;
-    for (std::size_t k = 0; k < line_curves.size(); ++k) {
+    for (std::size_t k : active) {
       const SweepLine& line = lines_[line_curves[k]];
       const auto r = line_enclosures[k].r(at_s);
       if (!r) return false;
@@ -898,8 +1036,19 @@ class Sweep {
   // face and in the ring of a role that matters outside W too (or anywhere).
   bool surely_relevant(const SweepLine& line, const std::array<Interval, 2>& at) const {
     if (impl_.face.maybe_contains(at) != true) return false;
+    std::optional<std::vector<std::size_t>> around;
+    // true when the intervals show the point outside every ring but except's (closed)
+    const auto outside = [&](const std::vector<ConvexRing>& rings, std::size_t except) {
+      if (!around) around = near(at);
+      return std::all_of(around->begin(), around->end(), [&](std::size_t k) {
+        return k == except || rings[k].maybe_contains(at) == false;
+      });
+    };
     return std::any_of(line.roles.begin(), line.roles.end(), [&](const LineRole& role) {
-      return !role.in_w && (!role.ring || role.ring->maybe_contains(at) == true);
+      if (role.kind == LineRole::kFace) return true;
+      if (role.kind == LineRole::kJoint || role.ring->maybe_contains(at) != true) return false;
+      return outside(umbrae_, prepared_.size()) &&
+             (role.kind == LineRole::kUmbra || outside(shadows_, role.owner));
     });
   }
 
@@ -1020,6 +1169,7 @@ class Sweep {
                                       penumbra::interval_point(face_.frame.u()),
                                       penumbra::interval_point(face_.frame.v())};
   std::vector<ConvexRing> shadows_;
+  detail::BoxGrid shadow_index_;                           // the shadows' boxes (near)
   std::map<std::vector<Rational>, int> known_;             // this sector's curves (register_curve)
   std::map<std::array<std::size_t, 4>, GapConic> conics_;  // (gap_conic)
   std::deque<std::optional<detail::IntervalCurve>> enclosed_;  // by curve id (enclosed)

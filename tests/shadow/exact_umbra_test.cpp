@@ -365,6 +365,31 @@ BOOST_AUTO_TEST_CASE(random_scenes_of_two_to_six_solids_agree_with_the_oracle) {
   BOOST_TEST_MESSAGE(joint << " scenes with joint umbrae, " << arcs << " curved pieces crossed");
 }
 
+// The sweep leaves out a whole shadow's edge where it lies strictly inside another whole
+// shadow and outside W, and every line strictly inside a single umbra (Sweep::relevant): a
+// veil, a small cube just under one end of the tube, casts a whole shadow over the floor under
+// the random scenes (so every other shadow's edges lie inside it), and a plate low over the
+// floor casts a single umbra across part of them. Membership and the arcs against the oracle
+// as above, with joint parts inside the veil's shadow.
+BOOST_AUTO_TEST_CASE(shadow_edges_inside_other_shadows_are_left_out_only_outside_w) {
+  const Face& face = floor_face();
+  int mismatches = 0, joint = 0, arcs = 0;
+  for_random_scenes(29, 8, [&](int scene, RandomScene drawn) {
+    auto& [solids, q1, q2] = drawn;
+    const double x = CGAL::to_double(q1.x()), y = CGAL::to_double(q1.y());
+    solids.push_back(box(x - 0.125, y - 0.125, 4.25, x + 0.125, y + 0.125, 4.375));
+    solids.push_back(box(-1, -3, 0.25, 0.5, -1.5, 0.3125));
+    const ExactUmbra umbra = umbra_of(face, q1, q2, solids);
+    joint += umbra.joint();
+    compare_with_oracle(face, q1, q2, solids, umbra, 200, 300 + scene, &mismatches);
+    arcs += check_across_arcs(face, q1, q2, solids, umbra);
+  });
+  BOOST_TEST(mismatches == 0);
+  BOOST_TEST(joint >= 3);
+  BOOST_TEST(arcs >= 3);
+  BOOST_TEST_MESSAGE(joint << " scenes with joint umbrae, " << arcs << " curved pieces crossed");
+}
+
 // joint_umbra (what `shadows --joint-umbrae` asks) leaves the sweep out only where it would
 // find no joint part: over random scenes (fixed seed), nullopt comes only where exact_umbra
 // finds none, and otherwise it is exact_umbra's set (the same areas and pieces of boundary).
