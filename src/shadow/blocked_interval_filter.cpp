@@ -65,6 +65,11 @@ std::optional<bool> less(const Interval& a, const Interval& b) {
   return std::nullopt;
 }
 
+// the intersection of two enclosures of one value.
+Interval both(const Interval& a, const Interval& b) {
+  return Interval(std::max(a.inf(), b.inf()), std::min(a.sup(), b.sup()));
+}
+
 }  // namespace
 
 IntervalPoint interval_point(const RationalPoint3& p) {
@@ -105,6 +110,18 @@ IntervalSolid interval_solid(const RationalSolid& solid) {
     if (ids.size() == 2) result.edge_of[{ids[0], ids[1]}] = static_cast<int>(e);
   }
   return result;
+}
+
+void enclose_edge_parameters(IntervalSolid& solid, const RationalSolid& exact,
+                             const RationalPoint3& q1, const RationalPoint3& q2) {
+  solid.edge_parameters.clear();
+  for (const auto& edge : exact.edges) {
+    const EdgeParameter t =
+        edge_parameter(exact.vertices[edge[0]], exact.vertices[edge[1]], q1, q2);
+    solid.edge_parameters.push_back({enclosure(t.gn.x()), enclosure(t.gn.y()), enclosure(t.gn.z()),
+                                     enclosure(t.hn), enclosure(t.gd.x()), enclosure(t.gd.y()),
+                                     enclosure(t.gd.z()), enclosure(t.hd)});
+  }
 }
 
 std::optional<BlockedBounds> blocked_bounds(const IntervalSolid& solid, const IntervalPoint& p,
@@ -160,8 +177,21 @@ std::optional<BlockedBounds> blocked_bounds(const IntervalSolid& solid, const In
     Interval t;
     bool clamp;
     const Vertex* vertex;
+    int edge = -1;  // the edge whose parameter at p enclosed t (by_edge), or -1
   };
   Short<End> ends;
+  // The end of a vertex on an edge, from the edge's parameter at p. Its denominator is zero
+  // where p, the edge and the source are coplanar; certified nonzero, the edge's line meets
+  // the triangle's plane in one point, so every clipped vertex on the edge is that point.
+  const auto by_edge = [&](const Vertex& v) -> std::optional<std::pair<Interval, int>> {
+    if (solid.edge_parameters.empty() || v.on.size() != 2) return std::nullopt;
+    const auto found = solid.edge_of.find({v.on[0], v.on[1]});
+    if (found == solid.edge_of.end()) return std::nullopt;
+    const std::array<Interval, 8>& g = solid.edge_parameters[found->second];
+    const Interval den = g[4] * p[0] + g[5] * p[1] + g[6] * p[2] + g[7];
+    if (!(den.inf() > 0 || den.sup() < 0)) return std::nullopt;
+    return std::pair{(g[0] * p[0] + g[1] * p[1] + g[2] * p[2] + g[3]) / den, found->second};
+  };
   for (const Vertex& v : polygon) {
     if (v.sides & kPQ1) {
       ends.push_back({Interval(0), true, &v});
@@ -169,9 +199,11 @@ std::optional<BlockedBounds> blocked_bounds(const IntervalSolid& solid, const In
       ends.push_back({Interval(1), true, &v});
     } else {
       if (v.sides) return std::nullopt;  // on the source's side: the exact path says why
-      const auto t = parameter_through(p, v.x, q1, d);
+      auto t = parameter_through(p, v.x, q1, d);
+      const auto e = by_edge(v);
+      if (e) t = t ? both(*t, e->first) : e->first;
       if (!t) return std::nullopt;
-      ends.push_back({*t, false, &v});
+      ends.push_back({*t, false, &v, e ? e->second : -1});
     }
   }
   // The extreme ends must be certain: strictly beyond every other, or the same clamp.
@@ -183,6 +215,7 @@ std::optional<BlockedBounds> blocked_bounds(const IntervalSolid& solid, const In
     for (std::size_t i = 0; i < ends.size(); ++i) {
       if (i == best) continue;
       if (ends[i].clamp && ends[best].clamp && ends[i].t.inf() == ends[best].t.inf()) continue;
+      if (ends[i].edge >= 0 && ends[i].edge == ends[best].edge) continue;  // the same point
       const auto certain = lowest ? less(ends[best].t, ends[i].t) : less(ends[i].t, ends[best].t);
       if (!certain || !*certain) return std::nullopt;
     }

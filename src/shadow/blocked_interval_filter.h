@@ -23,10 +23,17 @@ struct IntervalSolid {
   std::vector<std::array<Interval, 4>> planes;
   std::vector<int> geometric;
   std::map<std::pair<int, int>, int> edge_of;  // (smaller id, larger id) -> edge index
+  // for one source, each edge's parameter t(P) = (g_n . P + h_n) / (g_d . P + h_d)
+  // (edge_parameter in blocked_interval.h) enclosed: g_n, h_n, g_d, h_d; empty: not made
+  std::vector<std::array<Interval, 8>> edge_parameters;
 };
 
 // the filter of a solid made by rational_solid (its enclosures filled).
 IntervalSolid interval_solid(const RationalSolid& solid);
+
+// fills solid.edge_parameters for the source q1q2 (from the rational solid's vertices).
+void enclose_edge_parameters(IntervalSolid& solid, const RationalSolid& exact,
+                             const RationalPoint3& q1, const RationalPoint3& q2);
 
 // returns the interval enclosure of a rational point.
 IntervalPoint interval_point(const RationalPoint3& p);
@@ -41,7 +48,9 @@ struct BlockedBounds {
 };
 
 // returns the certified blocked interval of the source q1q2 from p (outside the solid), or
-// nullopt when the intervals cannot decide.
+// nullopt when the intervals cannot decide. An end fixed by an edge is enclosed both from
+// the clipped vertex and, when the solid has them for this source, from the edge's
+// parameter at p, which does not grow with the clipping's steps.
 std::optional<BlockedBounds> blocked_bounds(const IntervalSolid& solid, const IntervalPoint& p,
                                             const IntervalPoint& q1, const IntervalPoint& q2);
 

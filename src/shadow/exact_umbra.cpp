@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <iterator>
@@ -24,8 +25,10 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 #include <tuple>
+#include <unordered_map>
 
 #include "algebraic.h"
 #include "blocked_interval.h"
@@ -181,6 +184,7 @@ std::shared_ptr<const UmbraSolid> prepare_umbra_solid(const ConvexPolyhedron& so
   prepared->q2 = exact_value(q2);
   prepared->solid = detail::rational_solid(solid);
   prepared->filter = detail::interval_solid(prepared->solid);
+  detail::enclose_edge_parameters(prepared->filter, prepared->solid, prepared->q1, prepared->q2);
   // (the rational solid's planes begin with its faces', in order)
   for (int end = 0; end < 2; ++end)
     prepared->ends[end] = exact_point_shadow_planes(solid, prepared->solid.vertices,
@@ -709,11 +713,11 @@ class Sweep {
     // covered(): the blocked intervals at the world point
     IntervalPoint x;
     for (int i = 0; i < 3; ++i) x[i] = frame_[0][i] + at[0] * frame_[1][i] + at[1] * frame_[2][i];
-    std::vector<detail::BlockedBounds> bounds(prepared_.size());
+    std::vector<detail::BlockedBounds> bounds;
     for (std::size_t k : under) {
       const auto b = detail::blocked_bounds(prepared_[k]->filter, x, q1i_, q2i_);
       if (!b) return std::nullopt;
-      bounds[k] = *b;
+      bounds.push_back(*b);
     }
     const auto covers = detail::covers_source(bounds);
     if (!covers) return std::nullopt;
@@ -739,26 +743,60 @@ class Sweep {
   }
 
   // true when the occluders' blocked intervals at p cover the source: certified by the
-  // interval filter when it can, else exact.
+  // interval filter when it can, else exact. Where the filter names an end's edge but cannot
+  // order the ends (pieces of one wall hide abutting intervals: a gap of exactly zero), that
+  // end is the edge's parameter at p (blocked_interval.h), a quotient of two affine values,
+  // and only the occluders the filter cannot name are clipped in rationals.
   bool covered(const Probe& p) const {
     const RationalPoint3 x = world(p.point);
+    const std::vector<std::size_t> under = holding(p);
+    std::vector<std::optional<detail::BlockedBounds>> named(under.size());
     {
       CGAL::Protect_FPU_rounding<true> upward;
       const IntervalPoint at = detail::interval_point(x);
-      std::vector<detail::BlockedBounds> bounds(prepared_.size());
-      bool certain = true;
-      for (std::size_t k : holding(p)) {
-        const auto b = detail::blocked_bounds(prepared_[k]->filter, at, q1i_, q2i_);
-        if (!b) {
-          certain = false;
-          break;
-        }
-        bounds[k] = *b;
+      std::vector<detail::BlockedBounds> bounds;
+      for (std::size_t i = 0; i < under.size(); ++i) {
+        named[i] = detail::blocked_bounds(prepared_[under[i]]->filter, at, q1i_, q2i_);
+        if (named[i]) bounds.push_back(*named[i]);
       }
-      if (certain)
+      if (bounds.size() == under.size())
         if (const auto covers = detail::covers_source(bounds)) return *covers;
     }
-    return detail::covers_source(blocked(p));
+    std::vector<BlockedInterval> exact(under.size());
+    for (std::size_t i = 0; i < under.size(); ++i)
+      exact[i] = named[i] ? exactly(under[i], *named[i], x)
+                          : detail::blocked_interval(solid(under[i]), x, q1_, q2_);
+    return detail::covers_source(std::move(exact));
+  }
+
+  // the exact blocked interval of occluder k at x whose kind and ends' edges the filter
+  // certified (bounds): a clamp is 0 or 1, another end its edge's parameter at x.
+  BlockedInterval exactly(std::size_t k, const detail::BlockedBounds& bounds,
+                          const RationalPoint3& x) const {
+    BlockedInterval result;
+    result.kind = bounds.kind;
+    result.low_edge = bounds.low_edge;
+    result.high_edge = bounds.high_edge;
+    if (bounds.kind == BlockedInterval::Kind::none) return result;
+    result.low = bounds.low_clamped ? Rational(0) : edge_value(k, bounds.low_edge, x);
+    result.high = bounds.high_clamped ? Rational(1) : edge_value(k, bounds.high_edge, x);
+    return result;
+  }
+
+  // t = (g_n . x + h_n) / (g_d . x + h_d) for edge e of occluder k (made once per edge).
+  Rational edge_value(std::size_t k, int e, const RationalPoint3& x) const {
+    auto found = edge_parameters_.find({k, e});
+    if (found == edge_parameters_.end()) {
+      const auto& ends = solid(k).edges[e];
+      found = edge_parameters_
+                  .emplace(std::make_pair(k, e),
+                           detail::edge_parameter(solid(k).vertices[ends[0]],
+                                                  solid(k).vertices[ends[1]], q1_, q2_))
+                  .first;
+    }
+    const detail::EdgeParameter& t = found->second;
+    const RationalVector3 o = x - CGAL::ORIGIN;
+    return (t.gn * o + t.hn) / (t.gd * o + t.hd);
   }
 
   // the kinds of the occluders' blocked intervals at p and the edges that fix their ends
@@ -780,18 +818,6 @@ class Sweep {
       } else {
         result[k] = detail::blocked_interval(solid(k), x, q1_, q2_);
       }
-    }
-    return result;
-  }
-
-  // the occluders' blocked intervals at p; outside an occluder's whole shadow it hides
-  // nothing, without clipping.
-  std::vector<BlockedInterval> blocked(const Probe& p) const {
-    std::optional<RationalPoint3> x;
-    std::vector<BlockedInterval> result(prepared_.size());
-    for (std::size_t k : holding(p)) {
-      if (!x) x = world(p.point);
-      result[k] = detail::blocked_interval(solid(k), *x, q1_, q2_);
     }
     return result;
   }
@@ -919,9 +945,27 @@ class Sweep {
         }
       portions.push_back(std::move(portion));
     }
+    const Interval range(detail::enclosure(sa).inf(), detail::enclosure(sb).sup());
+    // A conic beyond its piece's bounds all over the slab is no curve of it: its crossings
+    // would only cut columns where nothing changes.
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      for (Portion& portion : portions) {
+        const auto bottom =
+            portion.bottom < 0 ? std::optional<Interval>(0) : enclosed(portion.bottom).r(range);
+        const auto top = enclosed(portion.top).r(range);
+        if (!bottom || !top) continue;
+        portion.conics.erase(
+            std::remove_if(portion.conics.begin(), portion.conics.end(),
+                           [&](int id) {
+                             const auto r = enclosed(id).r(range);
+                             return r && (r->sup() <= bottom->inf() || r->inf() >= top->sup());
+                           }),
+            portion.conics.end());
+      }
+    }
     // Where the conics cross each other, their piece's bounds, or leave through r = 0 or
     // infinity.
-    const Interval range(detail::enclosure(sa).inf(), detail::enclosure(sb).sup());
     const auto cross = [&](int c, int with) {
       if (const auto* roots = crossing_roots(c, with, range)) crossings.push_back(roots);
     };
@@ -942,6 +986,10 @@ class Sweep {
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
 
+    // A cell between the same two curves in the next column is the same cell unless the two
+    // meet at the cut between the columns: its label is carried over, not made again.
+    const std::set<int> lines(straight.begin(), straight.end());
+    std::map<std::pair<int, int>, Label> before;  // the last column's cells by their curves
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
       Column column;
       column.low = cuts[k];
@@ -949,15 +997,35 @@ class Sweep {
       column.sample = (cuts.size() == 2) ? middle : rational_between(cuts[k], cuts[k + 1]);
       const Rational& s = column.sample;
       std::vector<Rational> samples;  // a point r of each cell, from below
-      if (!order_by_intervals(pencil, s, straight, portions, column.curves, samples))
-        order_exactly(pencil, s, straight, portions, column.curves, samples);
-      for (const Rational& r : samples) {
-        const auto certain = maybe_label(pencil, s, r);
-        column.labels.push_back(certain ? *certain : label_of(pencil.point(s, r)));
+      order(pencil, s, straight, portions, column.curves, samples);
+      std::map<std::pair<int, int>, Label> here;
+      for (std::size_t c = 0; c < samples.size(); ++c) {
+        const bool between = c > 0 && c < column.curves.size();
+        const std::pair<int, int> bounds =
+            between ? std::pair{column.curves[c - 1], column.curves[c]} : std::pair{0, 0};
+        std::optional<Label> label;
+        if (between) {
+          const auto found = before.find(bounds);
+          if (found != before.end() && !meet(bounds, lines, cuts[k], range)) label = found->second;
+        }
+        if (!label) label = maybe_label(pencil, s, samples[c]);
+        if (!label) label = label_of(pencil.point(s, samples[c]));
+        column.labels.push_back(*label);
+        if (between) here.emplace(bounds, *label);
       }
+      before = std::move(here);
       impl_.cells += column.labels.size();
       sector.columns.push_back(std::move(column));
     }
+  }
+
+  // true when the curves (ids) may meet at the cut: two lines of the slab never do (they
+  // cross only at seams); a conic, at the roots of its crossing with the other curve.
+  bool meet(const std::pair<int, int>& curves, const std::set<int>& lines, const Algebraic& cut,
+            const Interval& range) {
+    if (lines.count(curves.first) && lines.count(curves.second)) return false;
+    const auto* roots = crossing_roots(curves.first, curves.second, range);
+    return roots && std::find(roots->begin(), roots->end(), cut) != roots->end();
   }
 
   // The lines of the slab that matter at its middle s, by increasing distinct r, and a point
@@ -1052,93 +1120,103 @@ class Sweep {
     });
   }
 
-  // The curves of a column at its sample s (the lines that matter on the slab and each
-  // portion's conics between its bounds), by increasing distinct r, and a point r of each
-  // cell between them (below the first and above the last too).
-  void order_exactly(const Pencil& pencil, const Rational& s, const std::vector<int>& straight,
-                     const std::vector<Portion>& portions, std::vector<int>& curves,
-                     std::vector<Rational>& samples) const {
-    std::vector<std::pair<Rational, int>> at;
-    for (int id : straight) at.emplace_back(*r_at(impl_.curves[id], s), id);
-    for (const Portion& portion : portions)
-      for (int id : portion.conics)
-        if (strictly_inside(portion, id, s)) at.emplace_back(*r_at(impl_.curves[id], s), id);
-    std::sort(at.begin(), at.end());
-    at.erase(std::unique(at.begin(), at.end(),
-                         [](const auto& a, const auto& b) { return a.first == b.first; }),
-             at.end());
-    for (const auto& entry : at) curves.push_back(entry.second);
-    for (std::size_t cell = 0; cell <= at.size(); ++cell) {
-      if (at.empty()) {
-        samples.emplace_back(1);
-      } else if (cell == 0) {
-        samples.push_back(pencil.finite() ? detail::simplest_between(0, at[0].first)
-                                          : Rational(at[0].first - 1));
-      } else if (cell == at.size()) {
-        samples.push_back(at.back().first + 1);
-      } else {
-        samples.push_back(detail::simplest_between(at[cell - 1].first, at[cell].first));
-      }
-    }
-  }
-
-  // order_exactly from intervals (upward rounding; a conic's place against its portion's
-  // bounds exactly where they cannot tell), the cells' points doubles with few bits: false,
-  // with nothing made, when the enclosures of two values overlap or a curve's holds a pole.
-  bool order_by_intervals(const Pencil& pencil, const Rational& s, const std::vector<int>& straight,
-                          const std::vector<Portion>& portions, std::vector<int>& curves,
-                          std::vector<Rational>& samples) {
+  // The curves of the column at s by increasing distinct r (the slab's lines, and each
+  // portion's conics strictly inside it) and a point r of each cell, from below. The values
+  // are enclosed in intervals (upward rounding); only the curves whose enclosures overlap
+  // another's (or hold a pole) are evaluated in rationals and ordered exactly, and a cell's
+  // point is a double with few bits where the enclosures around it are apart, else the
+  // simplest rational between the exact values. Of curves with equal values at s the
+  // smallest id is kept.
+  void order(const Pencil& pencil, const Rational& s, const std::vector<int>& straight,
+             const std::vector<Portion>& portions, std::vector<int>& curves,
+             std::vector<Rational>& samples) {
+    struct Value {
+      Interval r;
+      std::optional<Rational> exact;
+      int id;
+    };
+    std::vector<Value> at;
+    const auto exact = [&](Value& v) -> const Rational& {
+      if (!v.exact) v.exact = *r_at(impl_.curves[v.id], s);
+      return *v.exact;
+    };
     CGAL::Protect_FPU_rounding<true> upward;
     const Interval at_s = detail::enclosure(s);
-    std::vector<std::pair<Interval, int>> at;
     const auto value = [&](int id) { return enclosed(id).r(at_s); };
-    for (int id : straight) {
-      const auto r = value(id);
-      if (!r) return false;
-      at.emplace_back(*r, id);
-    }
+    const auto add = [&](int id, const std::optional<Interval>& r) {
+      if (r) return at.push_back({*r, std::nullopt, id});
+      if (const auto e = r_at(impl_.curves[id], s)) at.push_back({detail::enclosure(*e), *e, id});
+    };
+    for (int id : straight) add(id, value(id));
     for (const Portion& portion : portions) {
       const auto bottom = portion.bottom < 0 ? std::optional<Interval>(0) : value(portion.bottom);
       const auto top = value(portion.top);
-      if (!bottom || !top) return false;
       for (int id : portion.conics) {
         const auto r = value(id);
-        if (!r) return false;
-        if (r->inf() > bottom->sup() && r->sup() < top->inf()) {
-          at.emplace_back(*r, id);
-        } else if (!(r->sup() <= bottom->inf() || r->inf() >= top->sup()) &&
-                   strictly_inside(portion, id, s)) {
-          at.emplace_back(*r, id);  // (a conic on a bound there is left out, as order_exactly does)
+        if (r && bottom && top) {
+          if (r->inf() > bottom->sup() && r->sup() < top->inf()) {
+            add(id, r);
+            continue;
+          }
+          if (r->sup() <= bottom->inf() || r->inf() >= top->sup()) continue;
         }
+        // (a conic on a bound there is left out)
+        if (strictly_inside(portion, id, s)) add(id, r);
       }
     }
     std::sort(at.begin(), at.end(),
-              [](const auto& a, const auto& b) { return a.first.inf() < b.first.inf(); });
-    for (std::size_t k = 0; k + 1 < at.size(); ++k)
-      if (!(at[k].first.sup() < at[k + 1].first.inf())) return false;
-    std::vector<double> points;
-    for (std::size_t cell = 0; cell <= at.size(); ++cell) {
+              [](const Value& a, const Value& b) { return a.r.inf() < b.r.inf(); });
+    // each run of overlapping enclosures ordered exactly, equal values made one
+    std::vector<Value> ordered;
+    for (std::size_t first = 0; first < at.size();) {
+      std::size_t last = first + 1;
+      double reach = at[first].r.sup();
+      for (; last < at.size() && !(reach < at[last].r.inf()); ++last)
+        reach = std::max(reach, at[last].r.sup());
+      if (last - first > 1) {
+        for (std::size_t k = first; k < last; ++k) exact(at[k]);
+        std::sort(at.begin() + first, at.begin() + last, [](const Value& a, const Value& b) {
+          return *a.exact < *b.exact || (*a.exact == *b.exact && a.id < b.id);
+        });
+      }
+      for (std::size_t k = first; k < last; ++k)
+        if (k == first || *at[k].exact != *ordered.back().exact)
+          ordered.push_back(std::move(at[k]));
+      first = last;
+    }
+    for (const Value& v : ordered) curves.push_back(v.id);
+    for (std::size_t cell = 0; cell <= ordered.size(); ++cell) {
       std::optional<double> r;
-      if (at.empty()) {
+      if (ordered.empty()) {
         r = 1;
       } else if (cell == 0) {
-        const double first = at[0].first.inf();
+        const double first = ordered[0].r.inf();
         if (pencil.finite())
           r = detail::short_between(0, first);
         else if (const double below = std::floor(first) - 1; below < first)
           r = below;
-      } else if (cell == at.size()) {
-        const double last = at.back().first.sup();
+        if (!r) {
+          const Rational& e = exact(ordered[0]);
+          samples.push_back(pencil.finite() ? detail::simplest_between(0, e) : Rational(e - 1));
+          continue;
+        }
+      } else if (cell == ordered.size()) {
+        const double last = ordered.back().r.sup();
         if (const double above = std::ceil(last) + 1; above > last) r = above;
+        if (!r) {
+          samples.push_back(exact(ordered.back()) + 1);
+          continue;
+        }
       } else {
-        r = detail::short_between(at[cell - 1].first.sup(), at[cell].first.inf());
+        Value &low = ordered[cell - 1], &high = ordered[cell];
+        if (low.r.sup() < high.r.inf()) r = detail::short_between(low.r.sup(), high.r.inf());
+        if (!r) {
+          samples.push_back(detail::simplest_between(exact(low), exact(high)));
+          continue;
+        }
       }
-      if (!r) return false;
-      points.push_back(*r);
+      samples.emplace_back(*r);
     }
-    for (const auto& entry : at) curves.push_back(entry.second);
-    for (double r : points) samples.emplace_back(r);
-    return true;
   }
 
   // true when the conic id lies strictly between the portion's bounds at s (exact).
@@ -1162,6 +1240,8 @@ class Sweep {
   const Face& face_;
   RationalPoint3 q1_, q2_;
   std::vector<std::shared_ptr<const UmbraSolid>> prepared_;
+  // the edges' parameters met so far (edge_value), by (occluder, edge)
+  mutable std::map<std::pair<std::size_t, int>, detail::EdgeParameter> edge_parameters_;
   IntervalPoint q1i_ = detail::interval_point(q1_);
   IntervalPoint q2i_ = detail::interval_point(q2_);
   // the enclosures of the face frame's origin, u and v
@@ -1169,16 +1249,27 @@ class Sweep {
                                       penumbra::interval_point(face_.frame.u()),
                                       penumbra::interval_point(face_.frame.v())};
   std::vector<ConvexRing> shadows_;
-  detail::BoxGrid shadow_index_;                           // the shadows' boxes (near)
-  std::map<std::vector<Rational>, int> known_;             // this sector's curves (register_curve)
-  std::map<std::array<std::size_t, 4>, GapConic> conics_;  // (gap_conic)
+  detail::BoxGrid shadow_index_;                // the shadows' boxes (near)
+  std::map<std::vector<Rational>, int> known_;  // this sector's curves (register_curve)
+  struct KeyHash {
+    std::size_t operator()(const std::array<std::size_t, 4>& key) const {
+      std::size_t h = 0;
+      for (std::size_t k : key) h = h * 1000003u ^ std::hash<std::size_t>()(k);
+      return h;
+    }
+    std::size_t operator()(const std::pair<int, int>& key) const {
+      return std::hash<std::uint64_t>()(std::uint64_t(std::uint32_t(key.first)) << 32 |
+                                        std::uint32_t(key.second));
+    }
+  };
+  std::unordered_map<std::array<std::size_t, 4>, GapConic, KeyHash> conics_;  // (gap_conic)
   std::deque<std::optional<detail::IntervalCurve>> enclosed_;  // by curve id (enclosed)
   // a crossing polynomial of two curves (crossing_roots), its roots isolated when needed
   struct Crossing {
     std::vector<Interval> enclosure;  // of its coefficients
     std::optional<std::vector<Algebraic>> roots;
   };
-  std::map<std::pair<int, int>, Crossing> crossings_;
+  std::unordered_map<std::pair<int, int>, Crossing, KeyHash> crossings_;
   std::vector<ConvexRing> umbrae_;  // empty: no single umbra
   bool lines_collected_ = false;
   std::vector<SweepLine> lines_;
