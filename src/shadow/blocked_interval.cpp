@@ -212,4 +212,12 @@ EdgeParameter edge_parameter(const RationalPoint3& e0, const RationalPoint3& e1,
   return {c - CGAL::cross_product(o, w), CGAL::cross_product(d, w), -(c * o), c * d};
 }
 
+std::vector<EdgeParameter> edge_parameters(const RationalSolid& solid, const RationalPoint3& q1,
+                                           const RationalPoint3& q2) {
+  std::vector<EdgeParameter> result;
+  for (const auto& edge : solid.edges)
+    result.push_back(edge_parameter(solid.vertices[edge[0]], solid.vertices[edge[1]], q1, q2));
+  return result;
+}
+
 }  // namespace penumbra::detail

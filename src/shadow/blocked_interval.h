@@ -55,4 +55,8 @@ struct EdgeParameter {
 EdgeParameter edge_parameter(const RationalPoint3& e0, const RationalPoint3& e1,
                              const RationalPoint3& q1, const RationalPoint3& q2);
 
+// the parameter of each edge of solid (in the order of solid.edges) for the source q1q2.
+std::vector<EdgeParameter> edge_parameters(const RationalSolid& solid, const RationalPoint3& q1,
+                                           const RationalPoint3& q2);
+
 }  // namespace penumbra::detail

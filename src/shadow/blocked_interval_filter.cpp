@@ -112,12 +112,9 @@ IntervalSolid interval_solid(const RationalSolid& solid) {
   return result;
 }
 
-void enclose_edge_parameters(IntervalSolid& solid, const RationalSolid& exact,
-                             const RationalPoint3& q1, const RationalPoint3& q2) {
+void enclose_edge_parameters(IntervalSolid& solid, const std::vector<EdgeParameter>& edges) {
   solid.edge_parameters.clear();
-  for (const auto& edge : exact.edges) {
-    const EdgeParameter t =
-        edge_parameter(exact.vertices[edge[0]], exact.vertices[edge[1]], q1, q2);
+  for (const EdgeParameter& t : edges) {
     solid.edge_parameters.push_back({enclosure(t.gn.x()), enclosure(t.gn.y()), enclosure(t.gn.z()),
                                      enclosure(t.hn), enclosure(t.gd.x()), enclosure(t.gd.y()),
                                      enclosure(t.gd.z()), enclosure(t.hd)});

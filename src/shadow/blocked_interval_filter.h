@@ -31,9 +31,9 @@ struct IntervalSolid {
 // the filter of a solid made by rational_solid (its enclosures filled).
 IntervalSolid interval_solid(const RationalSolid& solid);
 
-// fills solid.edge_parameters for the source q1q2 (from the rational solid's vertices).
-void enclose_edge_parameters(IntervalSolid& solid, const RationalSolid& exact,
-                             const RationalPoint3& q1, const RationalPoint3& q2);
+// fills solid.edge_parameters with the enclosures of edges (edge_parameters() of its solid
+// for one source).
+void enclose_edge_parameters(IntervalSolid& solid, const std::vector<EdgeParameter>& edges);
 
 // returns the interval enclosure of a rational point.
 IntervalPoint interval_point(const RationalPoint3& p);

@@ -173,6 +173,7 @@ struct UmbraSolid {
   RationalPoint3 q1, q2;
   detail::RationalSolid solid;
   detail::IntervalSolid filter;
+  std::vector<detail::EdgeParameter> edges;  // each edge's parameter for this source
   std::array<std::vector<RationalPlane3>, 2> ends;
   std::vector<RationalPlane3> rays;
 };
@@ -184,7 +185,8 @@ std::shared_ptr<const UmbraSolid> prepare_umbra_solid(const ConvexPolyhedron& so
   prepared->q2 = exact_value(q2);
   prepared->solid = detail::rational_solid(solid);
   prepared->filter = detail::interval_solid(prepared->solid);
-  detail::enclose_edge_parameters(prepared->filter, prepared->solid, prepared->q1, prepared->q2);
+  prepared->edges = detail::edge_parameters(prepared->solid, prepared->q1, prepared->q2);
+  detail::enclose_edge_parameters(prepared->filter, prepared->edges);
   // (the rational solid's planes begin with its faces', in order)
   for (int end = 0; end < 2; ++end)
     prepared->ends[end] = exact_point_shadow_planes(solid, prepared->solid.vertices,
@@ -783,18 +785,9 @@ class Sweep {
     return result;
   }
 
-  // t = (g_n . x + h_n) / (g_d . x + h_d) for edge e of occluder k (made once per edge).
+  // t = (g_n . x + h_n) / (g_d . x + h_d) for edge e of occluder k.
   Rational edge_value(std::size_t k, int e, const RationalPoint3& x) const {
-    auto found = edge_parameters_.find({k, e});
-    if (found == edge_parameters_.end()) {
-      const auto& ends = solid(k).edges[e];
-      found = edge_parameters_
-                  .emplace(std::make_pair(k, e),
-                           detail::edge_parameter(solid(k).vertices[ends[0]],
-                                                  solid(k).vertices[ends[1]], q1_, q2_))
-                  .first;
-    }
-    const detail::EdgeParameter& t = found->second;
+    const detail::EdgeParameter& t = prepared_[k]->edges[e];
     const RationalVector3 o = x - CGAL::ORIGIN;
     return (t.gn * o + t.hn) / (t.gd * o + t.hd);
   }
@@ -885,9 +878,7 @@ class Sweep {
   // the conic t_high(j) = t_low(k) of the edges f of occluder j and e of occluder k.
   Quadratic2 gap_quadratic(std::size_t j, int f, std::size_t k, int e) const {
     auto parameter = [&](std::size_t o, int edge) {
-      const auto& ends = solid(o).edges[edge];
-      const detail::EdgeParameter t =
-          detail::edge_parameter(solid(o).vertices[ends[0]], solid(o).vertices[ends[1]], q1_, q2_);
+      const detail::EdgeParameter& t = prepared_[o]->edges[edge];
       return std::make_pair(on_face(face_.frame, t.gn, t.hn), on_face(face_.frame, t.gd, t.hd));
     };
     const auto [nf, df] = parameter(j, f);
@@ -1240,8 +1231,6 @@ class Sweep {
   const Face& face_;
   RationalPoint3 q1_, q2_;
   std::vector<std::shared_ptr<const UmbraSolid>> prepared_;
-  // the edges' parameters met so far (edge_value), by (occluder, edge)
-  mutable std::map<std::pair<std::size_t, int>, detail::EdgeParameter> edge_parameters_;
   IntervalPoint q1i_ = detail::interval_point(q1_);
   IntervalPoint q2i_ = detail::interval_point(q2_);
   // the enclosures of the face frame's origin, u and v

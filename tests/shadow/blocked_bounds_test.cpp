@@ -60,7 +60,7 @@ Counts check_wall(const std::vector<ConvexPolyhedron>& pieces, const Point3& q1,
     const detail::RationalSolid solid = detail::rational_solid(piece);
     const detail::IntervalSolid plain = detail::interval_solid(solid);
     detail::IntervalSolid with_edges = plain;
-    detail::enclose_edge_parameters(with_edges, solid, r1, r2);
+    detail::enclose_edge_parameters(with_edges, detail::edge_parameters(solid, r1, r2));
     for (const RationalPoint3& p : points) {
       const BlockedInterval exact = detail::blocked_interval(solid, p, r1, r2);
       std::optional<detail::BlockedBounds> filtered, filtered_plain;
