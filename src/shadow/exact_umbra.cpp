@@ -792,12 +792,20 @@ class Sweep {
     return (t.gn * o + t.hn) / (t.gd * o + t.hd);
   }
 
-  // the kinds of the occluders' blocked intervals at p and the edges that fix their ends
-  // (the values are not needed): from the interval filter when it can, else exact.
-  std::vector<BlockedInterval> ends(const Probe& p) const {
+  // What an occluder hides from a point, without the values: the kind of its blocked
+  // interval and the edges that fix its ends.
+  struct Ends {
+    std::size_t occluder;
+    BlockedInterval::Kind kind;
+    int low_edge, high_edge;
+  };
+
+  // the ends of the blocked intervals of the occluders whose whole shadows hold p (the others
+  // hide nothing): from the interval filter when it can, else exact.
+  std::vector<Ends> ends(const Probe& p) const {
     const RationalPoint3 x = world(p.point);
     const IntervalPoint at = detail::interval_point(x);  // (enclosures are outward in any rounding)
-    std::vector<BlockedInterval> result(prepared_.size());
+    std::vector<Ends> result;
     for (std::size_t k : holding(p)) {
       std::optional<detail::BlockedBounds> b;
       {
@@ -805,11 +813,10 @@ class Sweep {
         b = detail::blocked_bounds(prepared_[k]->filter, at, q1i_, q2i_);
       }
       if (b) {
-        result[k].kind = b->kind;
-        result[k].low_edge = b->low_edge;
-        result[k].high_edge = b->high_edge;
+        result.push_back({k, b->kind, b->low_edge, b->high_edge});
       } else {
-        result[k] = detail::blocked_interval(solid(k), x, q1_, q2_);
+        const BlockedInterval exact = detail::blocked_interval(solid(k), x, q1_, q2_);
+        result.push_back({k, exact.kind, exact.low_edge, exact.high_edge});
       }
     }
     return result;
@@ -918,19 +925,20 @@ class Sweep {
       const RationalPoint2 point = pencil.point(middle, below[k]);
       const Probe p(point);
       if (!impl_.face.contains(p) || !shared(p)) continue;
-      const std::vector<BlockedInterval> intervals = ends(p);
       Portion portion;
       portion.bottom = k == 0 ? -1 : straight[k - 1];
       portion.top = straight[k];
-      std::vector<std::size_t> hiding;  // the occluders that hide an interval from there
-      for (std::size_t k = 0; k < intervals.size(); ++k)
-        if (intervals[k].kind == BlockedInterval::Kind::interval) hiding.push_back(k);
-      for (std::size_t j : hiding)
-        for (std::size_t i : hiding) {
-          if (i == j) continue;
-          if (intervals[j].high_edge < 0 || intervals[i].low_edge < 0) continue;
+      std::vector<Ends> hiding = ends(p);  // the occluders that hide an interval from there
+      hiding.erase(
+          std::remove_if(hiding.begin(), hiding.end(),
+                         [](const Ends& e) { return e.kind != BlockedInterval::Kind::interval; }),
+          hiding.end());
+      for (const Ends& j : hiding)
+        for (const Ends& i : hiding) {
+          if (i.occluder == j.occluder) continue;
+          if (j.high_edge < 0 || i.low_edge < 0) continue;
           const GapConic& conic =
-              gap_conic(pencil, j, intervals[j].high_edge, i, intervals[i].low_edge);
+              gap_conic(pencil, j.occluder, j.high_edge, i.occluder, i.low_edge);
           if (!conic.rays.empty()) crossings.push_back(&conic.rays);
           if (conic.id >= 0) portion.conics.push_back(conic.id);
         }

@@ -185,6 +185,15 @@ std::vector<T> per_candidate(const Scene& scene,
   return made;
 }
 
+// removes from each face's candidates the occluders marked in back (back_pieces.h).
+void drop_back_pieces(std::vector<std::vector<std::size_t>>& candidates,
+                      const std::vector<char>& back) {
+  for (auto& list : candidates)
+    list.erase(
+        std::remove_if(list.begin(), list.end(), [&](std::size_t o) { return back[o] != 0; }),
+        list.end());
+}
+
 LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receivers,
                          const std::vector<std::size_t>& rank, std::size_t light_index,
                          const ShadowOptions& options) {
@@ -212,11 +221,7 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
 
   auto candidates = shading.active_candidates(candidates_of);
   // Pieces of closed parts turned away from the light add no shadow (back_pieces.h).
-  const std::vector<char> back = detail::back_pieces(scene, position);
-  for (auto& list : candidates)
-    list.erase(
-        std::remove_if(list.begin(), list.end(), [&](std::size_t o) { return back[o] != 0; }),
-        list.end());
+  drop_back_pieces(candidates, detail::back_pieces(scene, position));
   // The shadow volume of each occluder depends only on the light: build it once.
   const auto volumes = per_candidate<std::vector<Plane3>>(
       scene, candidates, options.parallel,
@@ -276,7 +281,11 @@ LightShadows shade_linear(const Scene& scene, const std::vector<Receiver>& recei
   };
   shading.list_far_occluders(q1, q2, candidates_of);
 
-  const auto candidates = shading.active_candidates(candidates_of);
+  auto candidates = shading.active_candidates(candidates_of);
+  // Pieces of closed parts turned away from the whole tube change neither the shadow nor the
+  // exact umbra (back_pieces.h), but a piece turned away may hide the tube alone where the
+  // others hide it only together: the single umbrae keep them, the exact umbrae do not.
+  if (options.joint_umbrae) drop_back_pieces(candidates, detail::back_pieces(scene, q1, q2));
   // What each occluder does under the whole tube depends only on the tube: made once
   // (the faces whose plane cuts the tube make their own, Fig. 7 S3).
   const auto whole = per_candidate<SourceOcclusion>(

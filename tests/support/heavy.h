@@ -13,6 +13,11 @@
 
 #define PENUMBRA_HEAVY_TEST *boost::unit_test::label("heavy")
 
+// Heavy cases of several minutes (a joint umbra over a whole real model): the Release suite
+// runs them as a CTest test of their own, `<layer>_long`, started first beside the others
+// (tests/CMakeLists.txt), instead of at the end of their layer's test.
+#define PENUMBRA_LONG_TEST *boost::unit_test::label("heavy") * boost::unit_test::label("long")
+
 namespace penumbra::test {
 
 // true in the sanitizer build (PENUMBRA_SANITIZED, tests/CMakeLists.txt).
