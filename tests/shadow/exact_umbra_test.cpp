@@ -303,7 +303,9 @@ struct BothWays {
 // oracles over every solid of the scene: the curved sets where a face has them, else (unless
 // only_curved) the straight ones, which are exact where the umbra has no joint part. Points on
 // a straight set's boundary or on a hole's ring are left out; points in a mesh face's holes
-// belong to no set.
+// belong to no set. The points lie on a grid of 1,023ths of the face's exact box: the scenes'
+// coordinates are quarters, and on their lines the pointwise oracle and the regularised sets
+// may differ (a sight line through the common edge of two flat pieces is blocked by neither).
 struct OracleTally {
   int mesh_faces = 0, checked = 0, in_holes = 0, umbra = 0, mismatches = 0;
 };
@@ -316,7 +318,7 @@ OracleTally against_the_oracles(const BothWays& computed, bool only_curved, unsi
   std::vector<ConvexPolyhedron> solids;
   for (const Object& object : scene.objects) solids.push_back(object.solid);
   std::mt19937 random(seed);  // fixed: failures must reproduce
-  std::uniform_int_distribution<int> step(1, 1023);
+  std::uniform_int_distribution<int> step(1, 1022);
   OracleTally tally;
   using Polygon = CGAL::Polygon_2<Kernel>;
   for (std::size_t r = 0; r < with.receivers.size(); ++r) {
@@ -349,10 +351,16 @@ OracleTally against_the_oracles(const BothWays& computed, bool only_curved, unsi
       return side == CGAL::ON_BOUNDED_SIDE;
     };
     const Polygon outer(face.ring.begin(), face.ring.end());
-    const CGAL::Bbox_2 box = outer.bbox();
+    // the exact box (a Bbox_2 of lazy points depends on which were evaluated before)
+    const auto [low_s, high_s] =
+        std::minmax_element(face.ring.begin(), face.ring.end(),
+                            [](const Point2& a, const Point2& b) { return a.x() < b.x(); });
+    const auto [low_t, high_t] =
+        std::minmax_element(face.ring.begin(), face.ring.end(),
+                            [](const Point2& a, const Point2& b) { return a.y() < b.y(); });
     for (int k = 0; k < 300; ++k) {
-      const Point2 p(box.xmin() + (box.xmax() - box.xmin()) * Exact(step(random)) / 1024,
-                     box.ymin() + (box.ymax() - box.ymin()) * Exact(step(random)) / 1024);
+      const Point2 p(low_s->x() + (high_s->x() - low_s->x()) * Exact(step(random)) / 1023,
+                     low_t->y() + (high_t->y() - low_t->y()) * Exact(step(random)) / 1023);
       if (outer.bounded_side(p) != CGAL::ON_BOUNDED_SIDE) continue;
       bool in_hole = false, on_edge = false;
       for (const Polygon& hole : holes) {
@@ -835,16 +843,22 @@ BOOST_AUTO_TEST_CASE(ifc_house_ground_agrees_with_the_oracle, PENUMBRA_LONG_TEST
   const Point3 q1 = to_exact(tube.start), q2 = to_exact(tube.end);
   std::vector<CGAL::Bbox_3> boxes;
   for (const Object& object : scene.objects) boxes.push_back(object.solid.bbox());
-  // the box of the straight shadow (frame coordinates)
-  CGAL::Bbox_2 band;
+  // the exact box of the straight shadow (frame coordinates), on a grid of 4,095ths
+  std::vector<Point2> corners;
   for (const Polygon2& polygon : shadow.shadow.polygons)
-    for (const Point2& p : polygon.outer) band += p.bbox();
+    corners.insert(corners.end(), polygon.outer.begin(), polygon.outer.end());
+  const auto [low_s, high_s] =
+      std::minmax_element(corners.begin(), corners.end(),
+                          [](const Point2& a, const Point2& b) { return a.x() < b.x(); });
+  const auto [low_t, high_t] =
+      std::minmax_element(corners.begin(), corners.end(),
+                          [](const Point2& a, const Point2& b) { return a.y() < b.y(); });
   std::mt19937 random(53);  // fixed: failures must reproduce
-  std::uniform_int_distribution<int> step(0, 4096);
+  std::uniform_int_distribution<int> step(1, 4094);
   int checked = 0, in_umbra = 0, in_shadow = 0, mismatches = 0;
   for (int k = 0; k < 600; ++k) {
-    const Point2 p(Exact(band.xmin()) + Exact(band.xmax() - band.xmin()) * step(random) / 4096,
-                   Exact(band.ymin()) + Exact(band.ymax() - band.ymin()) * step(random) / 4096);
+    const Point2 p(low_s->x() + (high_s->x() - low_s->x()) * Exact(step(random)) / 4095,
+                   low_t->y() + (high_t->y() - low_t->y()) * Exact(step(random)) / 4095);
     const Point3 x = top->frame.to_world(p);
     const CGAL::Bbox_3 reach = x.bbox() + q1.bbox() + q2.bbox();
     std::vector<ConvexPolyhedron> near;
