@@ -110,22 +110,33 @@ ExactUmbra umbra_of(const Face& face, const Point3& q1, const Point3& q2,
   return umbra;
 }
 
+// The exact box of points (a Bbox_2 of lazy points depends on which were evaluated before),
+// and its point at the fractions i / n and j / n of its sides.
+struct ExactBox {
+  explicit ExactBox(const std::vector<Point2>& points)
+      : low_s(points[0].x()), high_s(low_s), low_t(points[0].y()), high_t(low_t) {
+    for (const Point2& p : points) {
+      low_s = std::min(low_s, p.x()), high_s = std::max(high_s, p.x());
+      low_t = std::min(low_t, p.y()), high_t = std::max(high_t, p.y());
+    }
+  }
+  Point2 at(int i, int j, int n) const {
+    return Point2(low_s + (high_s - low_s) * Exact(i) / n, low_t + (high_t - low_t) * Exact(j) / n);
+  }
+  Exact low_s, high_s, low_t, high_t;
+};
+
 // compares contains() with the oracle at random rational points of the face's frame box;
 // returns the number of points in the umbra.
 int compare_with_oracle(const Face& face, const Point3& q1, const Point3& q2,
                         const std::vector<ConvexPolyhedron>& solids, const ExactUmbra& umbra,
                         int samples, unsigned seed, int* mismatches = nullptr) {
   std::mt19937 random(seed);
-  Exact low_s = face.ring[0].x(), high_s = low_s, low_t = face.ring[0].y(), high_t = low_t;
-  for (const Point2& p : face.ring) {
-    low_s = std::min(low_s, p.x()), high_s = std::max(high_s, p.x());
-    low_t = std::min(low_t, p.y()), high_t = std::max(high_t, p.y());
-  }
+  const ExactBox box(face.ring);
   std::uniform_int_distribution<int> step(1, 4095);
   int inside = 0, wrong = 0;
   for (int k = 0; k < samples; ++k) {
-    const Point2 p(low_s + (high_s - low_s) * Exact(step(random)) / 4096,
-                   low_t + (high_t - low_t) * Exact(step(random)) / 4096);
+    const Point2 p = box.at(step(random), step(random), 4096);
     if (CGAL::Polygon_2<Kernel>(face.ring.begin(), face.ring.end()).bounded_side(p) !=
         CGAL::ON_BOUNDED_SIDE)
       continue;
@@ -351,16 +362,9 @@ OracleTally against_the_oracles(const BothWays& computed, bool only_curved, unsi
       return side == CGAL::ON_BOUNDED_SIDE;
     };
     const Polygon outer(face.ring.begin(), face.ring.end());
-    // the exact box (a Bbox_2 of lazy points depends on which were evaluated before)
-    const auto [low_s, high_s] =
-        std::minmax_element(face.ring.begin(), face.ring.end(),
-                            [](const Point2& a, const Point2& b) { return a.x() < b.x(); });
-    const auto [low_t, high_t] =
-        std::minmax_element(face.ring.begin(), face.ring.end(),
-                            [](const Point2& a, const Point2& b) { return a.y() < b.y(); });
+    const ExactBox box(face.ring);
     for (int k = 0; k < 300; ++k) {
-      const Point2 p(low_s->x() + (high_s->x() - low_s->x()) * Exact(step(random)) / 1023,
-                     low_t->y() + (high_t->y() - low_t->y()) * Exact(step(random)) / 1023);
+      const Point2 p = box.at(step(random), step(random), 1023);
       if (outer.bounded_side(p) != CGAL::ON_BOUNDED_SIDE) continue;
       bool in_hole = false, on_edge = false;
       for (const Polygon& hole : holes) {
@@ -847,18 +851,12 @@ BOOST_AUTO_TEST_CASE(ifc_house_ground_agrees_with_the_oracle, PENUMBRA_LONG_TEST
   std::vector<Point2> corners;
   for (const Polygon2& polygon : shadow.shadow.polygons)
     corners.insert(corners.end(), polygon.outer.begin(), polygon.outer.end());
-  const auto [low_s, high_s] =
-      std::minmax_element(corners.begin(), corners.end(),
-                          [](const Point2& a, const Point2& b) { return a.x() < b.x(); });
-  const auto [low_t, high_t] =
-      std::minmax_element(corners.begin(), corners.end(),
-                          [](const Point2& a, const Point2& b) { return a.y() < b.y(); });
+  const ExactBox band(corners);
   std::mt19937 random(53);  // fixed: failures must reproduce
   std::uniform_int_distribution<int> step(1, 4094);
   int checked = 0, in_umbra = 0, in_shadow = 0, mismatches = 0;
   for (int k = 0; k < 600; ++k) {
-    const Point2 p(low_s->x() + (high_s->x() - low_s->x()) * Exact(step(random)) / 4095,
-                   low_t->y() + (high_t->y() - low_t->y()) * Exact(step(random)) / 4095);
+    const Point2 p = band.at(step(random), step(random), 4095);
     const Point3 x = top->frame.to_world(p);
     const CGAL::Bbox_3 reach = x.bbox() + q1.bbox() + q2.bbox();
     std::vector<ConvexPolyhedron> near;
