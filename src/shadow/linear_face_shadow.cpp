@@ -30,8 +30,8 @@ bool segment_meets(const ConvexPolyhedron& solid, const Point3& a, const Point3&
 
 }  // namespace
 
-SourceOcclusion source_occlusion(const ConvexPolyhedron& solid, const Point3& q1,
-                                 const Point3& q2) {
+SourceOcclusion source_occlusion(const ConvexPolyhedron& solid, const Point3& q1, const Point3& q2,
+                                 OpenEnd open) {
   SourceOcclusion result;
   // An occluder with no face turned toward either end point casts nothing, even
   // when the source lies on it (a tube on a ceiling's lower face).
@@ -40,7 +40,7 @@ SourceOcclusion source_occlusion(const ConvexPolyhedron& solid, const Point3& q1
   result.touches = segment_meets(solid, q1, q2);
   if (result.touches) return result;
   try {
-    result.volumes = linear_volumes(solid, q1, q2);
+    result.volumes = linear_volumes(solid, q1, q2, open);
   } catch (const std::domain_error&) {
     result.edge_on = true;
   }
@@ -57,6 +57,7 @@ std::optional<VisibleSource> visible_source(const Face& face, const Point3& q1, 
     const Point3 cut = q1 + (f1 / (f1 - f2)) * (q2 - q1);
     (CGAL::is_positive(f1) ? source.q2 : source.q1) = cut;
     source.clipped = true;
+    source.open = CGAL::is_positive(f1) ? OpenEnd::q2 : OpenEnd::q1;
   }
   return source;
 }
@@ -79,7 +80,8 @@ FaceShadow linear_face_shadow(const Face& face, const Point3& q1, const Point3& 
     // Only the part of V strictly in front of the face's plane can block light.
     if (!detail::reaches_front(solid, face)) continue;
     std::optional<SourceOcclusion> own;
-    if (!occluder.whole || source->clipped) own = source_occlusion(solid, source->q1, source->q2);
+    if (!occluder.whole || source->clipped)
+      own = source_occlusion(solid, source->q1, source->q2, source->open);
     const SourceOcclusion& occlusion = own ? *own : *occluder.whole;
     if (!occlusion.casts) continue;
     if (occlusion.touches)

@@ -34,7 +34,7 @@ namespace detail {
 LinearShadowRings clip_by_volumes(const LinearVolumes& volumes, const ReceiverClip& receiver) {
   const auto clip = [&](const OpenVolume& volume) -> std::optional<Ring2> {
     if (volume.planes.empty()) return std::nullopt;
-    return receiver.clip(volume.planes);
+    return receiver.clip(volume.planes, volume.limits);
   };
   return {clip(volumes.penumbra), clip(volumes.umbra)};
 }

@@ -50,16 +50,33 @@ std::vector<Plane> shadow_planes(const ConvexPolyhedron& solid, const std::vecto
   return planes;
 }
 
+// adds the plane through q and the edge ab away from inside, and when q is an open end of the
+// source (into: the direction from it into the source) the limit standing for that plane on a
+// face in it (PlaneLimit, linear_volumes.h).
+void add_string_plane(OpenVolume& volume, const Point3& q, const Point3& a, const Point3& b,
+                      const Point3& inside, const Vector3* into) {
+  const Plane3 through(q, a, b);
+  const bool flip = through.oriented_side(inside) == CGAL::ON_POSITIVE_SIDE;
+  const Plane3 plane = flip ? through.opposite() : through;
+  add_unique(volume.planes, plane);
+  if (!into) return;
+  const std::size_t index =
+      std::find(volume.planes.begin(), volume.planes.end(), plane) - volume.planes.begin();
+  const Plane3 limit(a, b, a + *into);  // normal (b - a) x d
+  volume.limits.push_back({index, flip ? limit.opposite() : limit});
+}
+
 // appends the planes through q and the contour edges from vertex `from` to vertex
 // `to`, walking the (clockwise) contour forward.
-void add_string_planes(std::vector<Plane3>& planes, const ConvexPolyhedron& solid, const Point3& q,
-                       const std::vector<int>& contour, int from, int to, const Point3& inside) {
+void add_string_planes(OpenVolume& volume, const ConvexPolyhedron& solid, const Point3& q,
+                       const std::vector<int>& contour, int from, int to, const Point3& inside,
+                       const Vector3* into) {
   const std::size_t n = contour.size();
   std::size_t i = std::find(contour.begin(), contour.end(), from) - contour.begin();
   while (contour[i] != to) {
     const std::size_t next = (i + 1) % n;
-    add_unique(planes, plane_away_from(q, solid.vertices()[contour[i]],
-                                       solid.vertices()[contour[next]], inside));
+    add_string_plane(volume, q, solid.vertices()[contour[i]], solid.vertices()[contour[next]],
+                     inside, into);
     i = next;
   }
 }
@@ -112,10 +129,20 @@ bool OpenVolume::contains(const Point3& x) const {
   });
 }
 
-OpenVolume point_shadow_volume(const ConvexPolyhedron& solid, const Point3& q) {
+OpenVolume point_shadow_volume(const ConvexPolyhedron& solid, const Point3& q,
+                               const Vector3* into) {
   std::vector<Plane3> face_planes;
   for (const Face& face : solid.faces()) face_planes.push_back(face.plane);
-  return {shadow_planes(solid, solid.vertices(), face_planes, q, q)};
+  OpenVolume volume{shadow_planes(solid, solid.vertices(), face_planes, q, q), {}};
+  if (into && !volume.planes.empty()) {
+    // The same string planes again (add_unique keeps each once), now with their limits.
+    const std::vector<int> loop = contour(solid, q);
+    const Point3 inside = inner_point(solid.vertices());
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      add_string_plane(volume, q, solid.vertices()[loop[i]],
+                       solid.vertices()[loop[(i + 1) % loop.size()]], inside, into);
+  }
+  return volume;
 }
 
 std::vector<RationalPlane3> exact_point_shadow_planes(
@@ -153,19 +180,23 @@ std::pair<std::vector<int>, std::vector<int>> tangent_vertices(const ConvexPolyh
 std::pair<OpenVolume, OpenVolume> case_a_volumes(const ConvexPolyhedron& solid, const Point3& q1,
                                                  const Point3& q2, const std::vector<int>& contour1,
                                                  const std::vector<int>& contour2, int left,
-                                                 int right) {
+                                                 int right, OpenEnd open) {
   const Point3 inside = inner_point(solid.vertices());
   const auto& vertices = solid.vertices();
+  // The directions from an open end into the source, for its string planes' limits.
+  const Vector3 into1 = q2 - q1, into2 = q1 - q2;
+  const Vector3* open1 = open == OpenEnd::q1 ? &into1 : nullptr;
+  const Vector3* open2 = open == OpenEnd::q2 ? &into2 : nullptr;
   OpenVolume penumbra, umbra;
   // App. A2 penumbra (i): Q1 with C1 from P_L to P_R; (ii): Q2 with C2 from P_R to
   // P_L; (iii): the planes [Q2, Q1, P_L] and [Q1, Q2, P_R] tangent to V.
-  add_string_planes(penumbra.planes, solid, q1, contour1, left, right, inside);
-  add_string_planes(penumbra.planes, solid, q2, contour2, right, left, inside);
+  add_string_planes(penumbra, solid, q1, contour1, left, right, inside, open1);
+  add_string_planes(penumbra, solid, q2, contour2, right, left, inside, open2);
   add_unique(penumbra.planes, plane_away_from(q2, q1, vertices[left], inside));
   add_unique(penumbra.planes, plane_away_from(q1, q2, vertices[right], inside));
   // Umbra (i): Q1 with C1 from P_R to P_L; (ii): Q2 with C2 from P_L to P_R.
-  add_string_planes(umbra.planes, solid, q1, contour1, right, left, inside);
-  add_string_planes(umbra.planes, solid, q2, contour2, left, right, inside);
+  add_string_planes(umbra, solid, q1, contour1, right, left, inside, open1);
+  add_string_planes(umbra, solid, q2, contour2, left, right, inside, open2);
   // Penumbra (iv): faces visible from the whole source (from both ends, since F is
   // linear along it); umbra (iii): faces visible from either end.
   for (const Face& face : solid.faces()) {
@@ -177,13 +208,14 @@ std::pair<OpenVolume, OpenVolume> case_a_volumes(const ConvexPolyhedron& solid, 
 }
 
 std::optional<LinearVolumes> linear_volumes(const ConvexPolyhedron& solid, const Point3& q1,
-                                            const Point3& q2) {
+                                            const Point3& q2, OpenEnd open) {
   LinearVolumes volumes;
   volumes.contour1 = contour(solid, q1);
   volumes.contour2 = contour(solid, q2);
   if (volumes.contour1.empty() && volumes.contour2.empty()) return std::nullopt;
-  volumes.shadow1 = point_shadow_volume(solid, q1);
-  volumes.shadow2 = point_shadow_volume(solid, q2);
+  const Vector3 into1 = q2 - q1, into2 = q1 - q2;
+  volumes.shadow1 = point_shadow_volume(solid, q1, open == OpenEnd::q1 ? &into1 : nullptr);
+  volumes.shadow2 = point_shadow_volume(solid, q2, open == OpenEnd::q2 ? &into2 : nullptr);
 
   if (const auto inside = line_in_solid(solid, q1, q2)) {
     // Case B: the line meets V beyond one end point, whose shadow volume encloses
@@ -203,7 +235,7 @@ std::optional<LinearVolumes> linear_volumes(const ConvexPolyhedron& solid, const
   volumes.left = left.front();
   volumes.right = right.front();
   std::tie(volumes.penumbra, volumes.umbra) = case_a_volumes(
-      solid, q1, q2, volumes.contour1, volumes.contour2, volumes.left, volumes.right);
+      solid, q1, q2, volumes.contour1, volumes.contour2, volumes.left, volumes.right, open);
   return volumes;
 }
 

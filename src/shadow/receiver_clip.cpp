@@ -1,5 +1,6 @@
 #include "receiver_clip.h"
 
+#include <deque>
 #include <utility>
 
 #include "half_plane.h"
@@ -73,14 +74,18 @@ ReceiverClip::Line ReceiverClip::trace(const Plane3& plane) const {
   return {sparse_dot(normal, u_), sparse_dot(normal, v_), sparse_dot(normal, origin_) + p.d()};
 }
 
-std::optional<Ring2> ReceiverClip::clip(const std::vector<Plane3>& volume) const {
+std::optional<Ring2> ReceiverClip::clip(const std::vector<Plane3>& volume,
+                                        const std::vector<PlaneLimit>& limits) const {
   const int n = static_cast<int>(ring_.size());
+  // The planes clipped in turn: volume's, then the limits of those that hold the face.
+  std::vector<const Plane3*> planes;
+  for (const Plane3& plane : volume) planes.push_back(&plane);
   // Exact lines, computed when first needed.
-  std::vector<std::optional<Line>> traces(volume.size());
+  std::deque<std::optional<Line>> traces(planes.size());
   auto line_of = [&](int id) -> const Line& {
     if (id < n) return edges_[static_cast<std::size_t>(id)];
     auto& cached = traces[static_cast<std::size_t>(id - n)];
-    if (!cached) cached = trace(volume[static_cast<std::size_t>(id - n)]);
+    if (!cached) cached = trace(*planes[static_cast<std::size_t>(id - n)]);
     return *cached;
   };
   // The exact vertex: a face corner as it is; the crossing of two lines solved in
@@ -107,12 +112,12 @@ std::optional<Ring2> ReceiverClip::clip(const std::vector<Plane3>& volume) const
   std::vector<int> out_line;
   std::vector<Interval> value;
   std::vector<CGAL::Sign> sign;
-  for (std::size_t j = 0; j < volume.size(); ++j) {
+  for (std::size_t j = 0; j < planes.size(); ++j) {
     const int trace_id = n + static_cast<int>(j);
     Interval a, b, c;
     {
       CGAL::Protect_FPU_rounding<true> upward;
-      const auto& plane = CGAL::approx(volume[j]);
+      const auto& plane = CGAL::approx(*planes[j]);
       a = normal_dot(plane, u_box_);
       b = normal_dot(plane, v_box_);
       c = plane_value(plane, origin_box_);
@@ -123,11 +128,19 @@ std::optional<Ring2> ReceiverClip::clip(const std::vector<Plane3>& volume) const
             ? a_zero.make_certain() && b_zero.make_certain()
             : CGAL::is_zero(line_of(trace_id).a) && CGAL::is_zero(line_of(trace_id).b);
     if (constant) {
-      // A trace parallel to the face: all or nothing, as in clip().
-      const CGAL::Uncertain<bool> negative = CGAL::is_negative(c);
-      if (!(CGAL::is_certain(negative) ? negative.make_certain()
-                                       : CGAL::is_negative(line_of(trace_id).c)))
-        return std::nullopt;
+      // A trace parallel to the face: all or nothing, as in clip(); where the plane holds the
+      // face, its limits instead when it has them (clipped after the others: the order of
+      // the half-planes does not change their intersection).
+      const CGAL::Uncertain<CGAL::Sign> certain = CGAL::sign(c);
+      const CGAL::Sign side =
+          CGAL::is_certain(certain) ? certain.make_certain() : CGAL::sign(line_of(trace_id).c);
+      if (side == CGAL::NEGATIVE) continue;
+      const std::size_t before = planes.size();
+      if (side == CGAL::ZERO && j < volume.size())
+        for (const PlaneLimit& limit : limits)
+          if (limit.plane == j) planes.push_back(&limit.limit);
+      if (planes.size() == before) return std::nullopt;
+      traces.resize(planes.size());
       continue;
     }
     const std::size_t m = ring.size();

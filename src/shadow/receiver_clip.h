@@ -17,6 +17,7 @@
 #include "penumbra/geometry/convex_polyhedron.h"
 #include "penumbra/geometry/interval.h"
 #include "penumbra/shadow/linear_shadow.h"
+#include "penumbra/shadow/linear_volumes.h"
 #include "penumbra/shadow/region.h"
 
 namespace penumbra::detail {
@@ -44,8 +45,12 @@ class ReceiverClip {
 
   // returns ring_with_area of the face's ring clipped by the closed half-planes
   // plane(X) <= 0 of volume, in order: the same points as clip() of
-  // half_plane.h would give, each known exactly (no lazy construction behind it).
-  std::optional<Ring2> clip(const std::vector<Plane3>& volume) const;
+  // half_plane.h would give, each known exactly (no lazy construction behind it). A plane
+  // parallel to the face keeps all of it or nothing, as there; nothing when it holds the face
+  // (its trace is constant 0), unless limits stand in for it (linear_volumes.h: a plane
+  // through an open end of the source), and then the face is clipped by those instead.
+  std::optional<Ring2> clip(const std::vector<Plane3>& volume,
+                            const std::vector<PlaneLimit>& limits = {}) const;
 
   using Rational = Exact::ET;
   struct Line {  // a s + b t + c = 0 in frame coordinates

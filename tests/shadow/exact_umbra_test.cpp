@@ -809,6 +809,31 @@ BOOST_AUTO_TEST_CASE(a_tube_inside_a_closed_part_keeps_every_piece) {
   BOOST_TEST(tally.umbra > 100);
 }
 
+// A tube in the block's wall x in [0, 1] from y = 1/2 to 7/2
+// (fixtures/scenes/linear-tube-cut-by-walls.json): the planes of the hole's walls y = 1 and
+// y = 3 cut it, and the pieces beside those walls have edges in the same planes, so a plane
+// through the cut point and such an edge holds the wall. Every sight line from those walls to
+// the part of the tube they see runs through the material x < 1: both are all umbra (the limit
+// of linear_volumes.h; before it, all penumbra), as the oracle over every solid says.
+BOOST_AUTO_TEST_CASE(walls_whose_planes_cut_the_tube_at_a_pieces_edge_are_umbra) {
+  const BothWays computed("linear-tube-cut-by-walls");
+  const OracleTally tally = against_the_oracles(computed, false, 47);
+  BOOST_TEST(tally.mismatches == 0);
+  BOOST_TEST(tally.umbra > 100);
+  int walls = 0;
+  for (const ShadowResult* result : {&computed.with, &computed.without})
+    for (std::size_t r = 0; r < result->receivers.size(); ++r) {
+      const FaceShadow& shadow = result->lights[0].faces[r];
+      if (!shadow.source_clipped) continue;
+      const Face& face = computed.scene.objects[result->receivers[r].object]
+                             .solid.faces()[result->receivers[r].face];
+      ++walls;
+      BOOST_TEST(shadow.umbra.area == face.area);
+      BOOST_TEST(shadow.penumbra.empty());
+    }
+  BOOST_TEST(walls == 4);  // y = 1 and y = 3, with and without joint umbrae
+}
+
 // The real model of issue #17 (docs/performance.md, "A real model"): the KIT house read
 // without "up" (lying on its side, 20,334 convex pieces) on a ground box under an 8 m tube
 // 14 m up. The ground's top is shadowed by 1,335 pieces (the 487 turned away from the tube

@@ -4,10 +4,13 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <CGAL/Polygon_2.h>
+
 #include <optional>
 #include <random>
 
 #include "linear_oracle.h"
+#include "penumbra/shadow/exact_umbra.h"
 #include "penumbra/shadow/face_shadow.h"
 #include "penumbra/shadow/linear_face_shadow.h"
 #include "solids.h"
@@ -110,6 +113,84 @@ BOOST_AUTO_TEST_CASE(a_face_whose_plane_cuts_the_source_sees_only_its_outer_part
   BOOST_TEST((source->q2 == Point3(1, 0.5, 2)));
   BOOST_TEST(shadow.shadow.empty());
   BOOST_TEST(shadow.lit.area == signed_area(face_ring(face)));
+}
+
+// The wall y = 0 facing -y (x in [-2, 2], z in [0, 2]) and a tube along y from (-1, -1, h)
+// to (-1, 1, h): its plane cuts the tube at c = (-1, 0, h), and only the part y < 0 lights
+// it. An occluder box [-3/4, -1/4] x [-2, 0] x [0, top] has edges in the wall's plane, so
+// the plane through c and such an edge is the wall's own plane: the side of the wall it
+// keeps is the limit as c moves into the tube (docs/linear-shadows.md, "The face and the
+// source"). Checks the umbra against the polygon expected, derived by the caller, exactly in
+// area and at random rational points of the wall; the penumbra is empty (whether a sight line
+// X -> (-1, y, h) meets the box does not depend on y: see the callers).
+namespace {
+
+void check_wall_umbra(double top, int h, const Ring2& expected, unsigned seed) {
+  const auto wall = box(-2, 0, 0, 2, 1, 2);
+  const Face& face = face_with_plane(wall, Plane3(0, -1, 0, 0));
+  const auto occluder = box(-0.75, -2, 0, -0.25, 0, top);
+  const Point3 q1(-1, -1, h), q2(-1, 1, h);
+  const FaceShadow shadow = penumbra::linear_face_shadow(face, q1, q2, {{0, &occluder}});
+  BOOST_TEST(shadow.source_clipped);
+  BOOST_TEST(shadow.penumbra.area == 0);
+  BOOST_TEST_REQUIRE(shadow.occluders.size() == 1u);
+  // The sweep of exact umbrae, run here though one occluder has no joint part: its blocked
+  // intervals are closed, and reach the cut point without a limit.
+  const ExactUmbra swept = exact_umbra(
+      face, q1, q2, {{&occluder, shadow.occluders[0].polygon, shadow.occluders[0].umbra}});
+  Ring2 ring;  // expected in the wall's frame
+  for (const Point2& p : expected) ring.push_back(face.frame.to_frame(Point3(p.x(), 0, p.y())));
+  const CGAL::Polygon_2<Kernel> polygon(ring.begin(), ring.end());
+  BOOST_TEST(shadow.umbra.area == CGAL::abs(polygon.area()));
+  std::mt19937 random(seed);  // fixed: failures must reproduce
+  std::uniform_int_distribution<int> along(-255, 255), up(1, 255);
+  int inside = 0;
+  for (int k = 0; k < 1000; ++k) {
+    const Point2 p =
+        face.frame.to_frame(Point3(Exact(along(random)) / 128, 0, Exact(up(random)) / 128));
+    const auto side = polygon.bounded_side(p);
+    if (side == CGAL::ON_BOUNDARY) continue;
+    inside += side == CGAL::ON_BOUNDED_SIDE;
+    BOOST_TEST((side_of(shadow.umbra, p) == side), "at " << face.frame.to_world(p));
+    BOOST_TEST(swept.contains(p) == (side == CGAL::ON_BOUNDED_SIDE),
+               "at " << face.frame.to_world(p));
+    BOOST_TEST(!swept.in_penumbra(p), "at " << face.frame.to_world(p));
+  }
+  BOOST_TEST(inside > 50);
+  BOOST_TEST(swept.area() == CGAL::to_double(shadow.umbra.area),
+             boost::test_tools::tolerance(1e-12));
+}
+
+}  // namespace
+
+// A low box (top = 1) under the tube at h = 2, touching the wall along x in [-3/4, -1/4],
+// z in [0, 1]. From X = (x, 0, z): for x < -3/4 the sight line to (-1, y, 2) stays at
+// x < -3/4, clear of the box; for x in (-3/4, -1/4) it enters the box at once when z < 1 (X
+// is on its face y = 0) and rises clear of it when z > 1; for x > -1/4 it is at height
+// z + (2 - z)(x - s)/(x + 1) where it crosses x = s, lowest at s = -1/4, and at depth
+// y (x - s)/(x + 1) in (-2, 0): it meets the box iff z + (2 - z)(x + 1/4)/(x + 1) < 1, i.e.
+// z < 2 (1 - 2x) / 3. The umbra is (-3/4, 0), (1/2, 0), (-1/4, 1), (-3/4, 1) in (x, z);
+// before the limit, the plane through c and the box's edges in y = 0 (one of its umbra
+// planes) kept none of the wall.
+BOOST_AUTO_TEST_CASE(an_edge_in_the_plane_that_cuts_the_tube_keeps_the_umbra) {
+  check_wall_umbra(1, 2,
+                   {Point2(-Exact(3) / 4, 0), Point2(Exact(1) / 2, 0), Point2(-Exact(1) / 4, 1),
+                    Point2(-Exact(3) / 4, 1)},
+                   5);
+}
+
+// A box as high as the wall (top = 2) under the tube at h = 3, touching the wall along
+// x in [-3/4, -1/4]. From X = (x, 0, z): for x < -3/4 the sight line to (-1, y, 3) stays at
+// x < -3/4, clear of the box; for x in (-3/4, -1/4) it enters the box at once (X is on its face
+// y = 0); for x > -1/4 it meets it iff z + (3 - z)(x + 1/4)/(x + 1) < 2, i.e.
+// z < (5 - 4x) / 3. The umbra is (-3/4, 0), (5/4, 0), (-1/4, 2), (-3/4, 2): its side x = -3/4
+// lies on the limit of the plane through c and the box's edge x = -3/4, y = 0 (turned the
+// other way, it would keep x < -3/4 and leave no umbra).
+BOOST_AUTO_TEST_CASE(the_limit_plane_keeps_the_side_behind_the_edge) {
+  check_wall_umbra(2, 3,
+                   {Point2(-Exact(3) / 4, 0), Point2(Exact(5) / 4, 0), Point2(-Exact(1) / 4, 2),
+                    Point2(-Exact(3) / 4, 2)},
+                   6);
 }
 
 BOOST_AUTO_TEST_CASE(a_face_behind_both_ends_is_wholly_unlit) {

@@ -25,8 +25,10 @@ struct SourceOcclusion {
   std::optional<LinearVolumes> volumes;  // when it casts, does not touch and is not edge-on
 };
 
-// returns what solid does under the source q1q2.
-SourceOcclusion source_occlusion(const ConvexPolyhedron& solid, const Point3& q1, const Point3& q2);
+// returns what solid does under the source q1q2, open at the end `open` (a clipped source's cut
+// point: its volumes carry their limits there, linear_volumes.h).
+SourceOcclusion source_occlusion(const ConvexPolyhedron& solid, const Point3& q1, const Point3& q2,
+                                 OpenEnd open = OpenEnd::none);
 
 struct Occluder {
   std::size_t id;
@@ -39,7 +41,8 @@ struct Occluder {
 // The part of the source a face can see (Fig. 7): q1q2 cut by the face's plane.
 struct VisibleSource {
   Point3 q1, q2;
-  bool clipped = false;  // the face's plane cuts the source
+  bool clipped = false;          // the face's plane cuts the source
+  OpenEnd open = OpenEnd::none;  // when clipped: the end that is the cut point
 };
 
 // returns the part of the source strictly on the face's outer side, closed at the
