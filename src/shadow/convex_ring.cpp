@@ -101,6 +101,10 @@ std::array<Interval, 2> interval_point(const Pencil& pencil, const Interval& s, 
 FilteredAffine::FilteredAffine(const Affine2& exact)
     : exact_(exact), d_(enclosure(exact.d)), e_(enclosure(exact.e)), f_(enclosure(exact.f)) {}
 
+FilteredAffine::FilteredAffine(const std::array<Interval, 3>& enclosures,
+                               std::function<Affine2()> make)
+    : make_(std::move(make)), d_(enclosures[0]), e_(enclosures[1]), f_(enclosures[2]) {}
+
 std::optional<CGAL::Sign> FilteredAffine::maybe_sign(const std::array<Interval, 2>& at) const {
   const Interval value = d_ * at[0] + e_ * at[1] + f_;
   if (value.inf() > 0) return CGAL::POSITIVE;
@@ -114,7 +118,7 @@ CGAL::Sign FilteredAffine::sign(const Probe& p) const {
     CGAL::Protect_FPU_rounding<true> upward;
     if (const auto certain = maybe_sign(p.at)) return *certain;
   }
-  return CGAL::sign(exact_(p.point));
+  return CGAL::sign(exact()(p.point));
 }
 
 }  // namespace penumbra::detail

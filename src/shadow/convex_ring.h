@@ -6,6 +6,7 @@
 // intervals certify is the exact sign; otherwise the rationals decide.
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -83,11 +84,16 @@ class FaceRegion {
 // The enclosure of the pencil's point (s, r) for enclosures of s and r (upward rounding).
 std::array<Interval, 2> interval_point(const Pencil& pencil, const Interval& s, const Interval& r);
 
-// An affine function d x + e y + f of the frame with a filtered sign.
+// An affine function d x + e y + f of the frame with a filtered sign: its rational form
+// given, or made by make when first asked for (enclosures must then hold its coefficients).
 class FilteredAffine {
  public:
   explicit FilteredAffine(const Affine2& exact);
-  const Affine2& exact() const { return exact_; }
+  FilteredAffine(const std::array<Interval, 3>& enclosures, std::function<Affine2()> make);
+  const Affine2& exact() const {
+    if (!exact_) exact_ = make_();
+    return *exact_;
+  }
   // the sign of the function at p.
   CGAL::Sign sign(const Probe& p) const;
   // the sign at a point known by an enclosure only, or nullopt when the intervals cannot
@@ -97,7 +103,8 @@ class FilteredAffine {
   std::array<Interval, 3> enclosures() const { return {d_, e_, f_}; }
 
  private:
-  Affine2 exact_;
+  mutable std::optional<Affine2> exact_;
+  std::function<Affine2()> make_;
   Interval d_, e_, f_;
 };
 

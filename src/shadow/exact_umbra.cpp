@@ -24,6 +24,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <numeric>
 #include <set>
 #include <stdexcept>
@@ -172,10 +173,34 @@ using PolygonPieces = std::vector<std::vector<RingPiece>>;
 struct UmbraSolid {
   RationalPoint3 q1, q2;
   detail::RationalSolid solid;
-  detail::IntervalSolid filter;
-  std::vector<detail::EdgeParameter> edges;  // each edge's parameter for this source
   std::array<std::vector<RationalPlane3>, 2> ends;
+  std::array<std::vector<std::array<Interval, 4>>, 2> end_enclosures;  // of a, b, c, d
   std::vector<RationalPlane3> rays;
+
+  // The interval filter of the solid with each edge's parameter for this source, and those
+  // parameters in rationals: made when a sweep first asks (a face whose occluders cannot
+  // hide the source together, the usual case, never does), once for every thread.
+  const detail::IntervalSolid& filter() const {
+    make_edges();
+    return filter_;
+  }
+  const std::vector<detail::EdgeParameter>& edges() const {
+    make_edges();
+    return edges_;
+  }
+
+ private:
+  void make_edges() const {
+    std::call_once(edges_made_, [this] {
+      edges_ = detail::edge_parameters(solid, q1, q2);
+      filter_ = detail::interval_solid(solid);
+      detail::enclose_edge_parameters(filter_, edges_);
+    });
+  }
+
+  mutable std::once_flag edges_made_;
+  mutable detail::IntervalSolid filter_;
+  mutable std::vector<detail::EdgeParameter> edges_;
 };
 
 std::shared_ptr<const UmbraSolid> prepare_umbra_solid(const ConvexPolyhedron& solid,
@@ -184,13 +209,14 @@ std::shared_ptr<const UmbraSolid> prepare_umbra_solid(const ConvexPolyhedron& so
   prepared->q1 = exact_value(q1);
   prepared->q2 = exact_value(q2);
   prepared->solid = detail::rational_solid(solid);
-  prepared->filter = detail::interval_solid(prepared->solid);
-  prepared->edges = detail::edge_parameters(prepared->solid, prepared->q1, prepared->q2);
-  detail::enclose_edge_parameters(prepared->filter, prepared->edges);
   // (the rational solid's planes begin with its faces', in order)
-  for (int end = 0; end < 2; ++end)
+  for (int end = 0; end < 2; ++end) {
     prepared->ends[end] = exact_point_shadow_planes(solid, prepared->solid.vertices,
                                                     prepared->solid.planes, end ? q2 : q1);
+    for (const RationalPlane3& h : prepared->ends[end])
+      prepared->end_enclosures[end].push_back({detail::enclosure(h.a()), detail::enclosure(h.b()),
+                                               detail::enclosure(h.c()), detail::enclosure(h.d())});
+  }
   const RationalVector3 d = prepared->q2 - prepared->q1;
   for (const RationalPoint3& v : prepared->solid.vertices) {
     const RationalVector3 g = CGAL::cross_product(d, v - prepared->q1);
@@ -342,22 +368,25 @@ class Sweep {
     if (!lines_collected_) collect_lines();
     const Pencil& pencil = sector.pencil;
     std::vector<Rational> seams{pencil.s_low(), pencil.s_high()};
-    auto add_rays = [&](const Poly& rays) {
-      if (rays.degree() == 1) seams.push_back(-rays.c[0] / rays.c[1]);
+    std::vector<Rational> along;  // the seams a line of the sweep runs along
+    auto add_rays = [&](const Poly& rays, bool line) {
+      if (rays.degree() != 1) return;
       // (degree 2: a degenerate conic's pair of pencil lines; none among straight lines)
+      seams.push_back(-rays.c[0] / rays.c[1]);
+      if (line) along.push_back(seams.back());
     };
     std::vector<std::size_t> line_curves;  // indices into lines_ of lines met once per ray
     std::vector<PencilCurve> line_traces;
     for (std::size_t k = 0; k < lines_.size(); ++k) {
       const detail::PencilTrace trace = pencil.trace(lines_[k].line.line());
-      add_rays(trace.rays);
+      add_rays(trace.rays, true);
       if (!trace.curve) continue;
       if (trace.curve->den.degree() == 1)
         seams.push_back(-trace.curve->den.c[0] / trace.curve->den.c[1]);
       line_curves.push_back(k);
       line_traces.push_back(*trace.curve);
     }
-    for (const Affine2& ray : rays_) add_rays(pencil.trace(ray.line()).rays);
+    for (const Affine2& ray : rays_) add_rays(pencil.trace(ray.line()).rays, false);
     for (const RationalPoint2& p : impl_.face.points())
       if (const auto c = pencil.coordinates(p)) seams.push_back(c->first);
     // Crossings of two lines inside the face and inside a region of each: only lines whose
@@ -394,6 +423,7 @@ class Sweep {
                 seams.end());
     sector.seams = seams;
     for (const Rational& s : seams) sector.seam_values.push_back(algebraic(s));
+    std::sort(along.begin(), along.end());
 
     // Curves of the lines, registered once per sector.
     std::vector<int> line_ids;
@@ -418,8 +448,11 @@ class Sweep {
                    active.end());
       here = active;
       std::sort(here.begin(), here.end());
+      // The last column's labels carry over the seam unless a line runs along it.
+      if (k == 0 || std::binary_search(along.begin(), along.end(), seams[k])) carried_.clear();
       slab(sector, k, middle, here, line_curves, line_ids, line_enclosures);
     }
+    carried_.clear();
   }
 
  private:
@@ -602,12 +635,22 @@ class Sweep {
     // W needs two occluders and interior on the face (joint_region.h); without it the
     // lines that only matter in W are left out and no point is shared.
     if (prepared_.size() < 2) return;
+    // Each plane's function on the face, (n . u) x + (n . v) y + n . o + h, enclosed from
+    // the enclosures of the plane and the frame; the rationals only when a sign needs them.
+    CGAL::Protect_FPU_rounding<true> upward;
+    const auto& [o, u, v] = frame_;
     for (const auto& prepared : prepared_)
       for (int end = 0; end < 2; ++end) {
         detail::EndShadow volume;
         volume.reserve(prepared->ends[end].size());
-        for (const RationalPlane3& plane : prepared->ends[end])
-          volume.emplace_back(on_face(face_.frame, plane));
+        for (std::size_t k = 0; k < prepared->ends[end].size(); ++k) {
+          const auto& [a, b, c, h] = prepared->end_enclosures[end][k];
+          const RationalPlane3* plane = &prepared->ends[end][k];
+          volume.emplace_back(std::array<Interval, 3>{a * u[0] + b * u[1] + c * u[2],
+                                                      a * v[0] + b * v[1] + c * v[2],
+                                                      a * o[0] + b * o[1] + c * o[2] + h},
+                              [this, plane] { return on_face(face_.frame, *plane); });
+        }
         end_shadows_[end].push_back(std::move(volume));
       }
     if (!detail::may_hide_together(impl_.face, end_shadows_, umbrae_)) end_shadows_ = {};
@@ -717,7 +760,7 @@ class Sweep {
     for (int i = 0; i < 3; ++i) x[i] = frame_[0][i] + at[0] * frame_[1][i] + at[1] * frame_[2][i];
     std::vector<detail::BlockedBounds> bounds;
     for (std::size_t k : under) {
-      const auto b = detail::blocked_bounds(prepared_[k]->filter, x, q1i_, q2i_);
+      const auto b = detail::blocked_bounds(prepared_[k]->filter(), x, q1i_, q2i_);
       if (!b) return std::nullopt;
       bounds.push_back(*b);
     }
@@ -758,7 +801,7 @@ class Sweep {
       const IntervalPoint at = detail::interval_point(x);
       std::vector<detail::BlockedBounds> bounds;
       for (std::size_t i = 0; i < under.size(); ++i) {
-        named[i] = detail::blocked_bounds(prepared_[under[i]]->filter, at, q1i_, q2i_);
+        named[i] = detail::blocked_bounds(prepared_[under[i]]->filter(), at, q1i_, q2i_);
         if (named[i]) bounds.push_back(*named[i]);
       }
       if (bounds.size() == under.size())
@@ -787,7 +830,7 @@ class Sweep {
 
   // t = (g_n . x + h_n) / (g_d . x + h_d) for edge e of occluder k.
   Rational edge_value(std::size_t k, int e, const RationalPoint3& x) const {
-    const detail::EdgeParameter& t = prepared_[k]->edges[e];
+    const detail::EdgeParameter& t = prepared_[k]->edges()[e];
     const RationalVector3 o = x - CGAL::ORIGIN;
     return (t.gn * o + t.hn) / (t.gd * o + t.hd);
   }
@@ -810,7 +853,7 @@ class Sweep {
       std::optional<detail::BlockedBounds> b;
       {
         CGAL::Protect_FPU_rounding<true> upward;
-        b = detail::blocked_bounds(prepared_[k]->filter, at, q1i_, q2i_);
+        b = detail::blocked_bounds(prepared_[k]->filter(), at, q1i_, q2i_);
       }
       if (b) {
         result.push_back({k, b->kind, b->low_edge, b->high_edge});
@@ -885,7 +928,7 @@ class Sweep {
   // the conic t_high(j) = t_low(k) of the edges f of occluder j and e of occluder k.
   Quadratic2 gap_quadratic(std::size_t j, int f, std::size_t k, int e) const {
     auto parameter = [&](std::size_t o, int edge) {
-      const detail::EdgeParameter& t = prepared_[o]->edges[edge];
+      const detail::EdgeParameter& t = prepared_[o]->edges()[edge];
       return std::make_pair(on_face(face_.frame, t.gn, t.hn), on_face(face_.frame, t.gd, t.hd));
     };
     const auto [nf, df] = parameter(j, f);
@@ -920,6 +963,7 @@ class Sweep {
     // The conics of each piece between consecutive lines.
     std::vector<Portion> portions;
     std::vector<const std::vector<Algebraic>*> crossings;  // the roots of each
+    std::vector<const std::vector<Algebraic>*> along;      // pencil lines in a conic (cuts)
     // (none above the last line: outside the face; none below the first around no centre)
     for (std::size_t k = pencil.finite() ? 0 : 1; k < straight.size(); ++k) {
       const RationalPoint2 point = pencil.point(middle, below[k]);
@@ -939,7 +983,10 @@ class Sweep {
           if (j.high_edge < 0 || i.low_edge < 0) continue;
           const GapConic& conic =
               gap_conic(pencil, j.occluder, j.high_edge, i.occluder, i.low_edge);
-          if (!conic.rays.empty()) crossings.push_back(&conic.rays);
+          if (!conic.rays.empty()) {
+            crossings.push_back(&conic.rays);
+            along.push_back(&conic.rays);
+          }
           if (conic.id >= 0) portion.conics.push_back(conic.id);
         }
       portions.push_back(std::move(portion));
@@ -986,9 +1033,19 @@ class Sweep {
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
 
     // A cell between the same two curves in the next column is the same cell unless the two
-    // meet at the cut between the columns: its label is carried over, not made again.
+    // meet at the cut between the columns: its label is carried over, not made again. So is
+    // the last column's of the slab before, across the seam, unless a line of the sweep runs
+    // along the seam (run) or a conic of either slab does: then the cells on both sides are
+    // not joined (a vertical boundary at the seam).
+    const auto on = [](const std::vector<const std::vector<Algebraic>*>& lines,
+                       const Algebraic& s) {
+      return std::any_of(lines.begin(), lines.end(), [&](const auto* roots) {
+        return std::find(roots->begin(), roots->end(), s) != roots->end();
+      });
+    };
+    if (on(along, low)) carried_.clear();
     const std::set<int> lines(straight.begin(), straight.end());
-    std::map<std::pair<int, int>, Label> before;  // the last column's cells by their curves
+    std::map<std::pair<int, int>, Label> before = std::move(carried_);  // by their curves
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
       Column column;
       column.low = cuts[k];
@@ -1005,7 +1062,9 @@ class Sweep {
         std::optional<Label> label;
         if (between) {
           const auto found = before.find(bounds);
-          if (found != before.end() && !meet(bounds, lines, cuts[k], range)) label = found->second;
+          if (found != before.end() &&
+              !(k == 0 ? meet_at(bounds, sa) : meet(bounds, lines, cuts[k], range)))
+            label = found->second;
         }
         if (!label) label = maybe_label(pencil, s, samples[c]);
         if (!label) label = label_of(pencil.point(s, samples[c]));
@@ -1016,6 +1075,22 @@ class Sweep {
       impl_.cells += column.labels.size();
       sector.columns.push_back(std::move(column));
     }
+    carried_.clear();
+    if (!on(along, high)) carried_ = std::move(before);
+  }
+
+  // true when the curves (ids) meet at s, or either has a pole there: exactly, unless their
+  // enclosures there are apart.
+  bool meet_at(const std::pair<int, int>& curves, const Rational& s) {
+    {
+      CGAL::Protect_FPU_rounding<true> upward;
+      const Interval at = detail::enclosure(s);
+      const auto a = enclosed(curves.first).r(at), b = enclosed(curves.second).r(at);
+      if (a && b && (a->sup() < b->inf() || b->sup() < a->inf())) return false;
+    }
+    const PencilCurve &a = impl_.curves[curves.first].f, &b = impl_.curves[curves.second].f;
+    const Rational da = a.den(s), db = b.den(s);
+    return CGAL::is_zero(da) || CGAL::is_zero(db) || a.num(s) * db == b.num(s) * da;
   }
 
   // true when the curves (ids) may meet at the cut: two lines of the slab never do (they
@@ -1269,6 +1344,9 @@ class Sweep {
   std::unordered_map<std::pair<int, int>, Crossing, KeyHash> crossings_;
   std::vector<ConvexRing> umbrae_;  // empty: no single umbra
   bool lines_collected_ = false;
+  // the labels of the last column of the slab just swept, by the curves around each cell,
+  // while they may carry over the next seam (slab)
+  std::map<std::pair<int, int>, Label> carried_;
   std::vector<SweepLine> lines_;
   std::vector<Affine2> rays_;
   // per end of the source, per occluder: its point shadow volume's planes on the face (the

@@ -27,27 +27,28 @@ auto plane_away_from(const Point& a, const Point& b, const Point& c, const Point
   return plane.oriented_side(inside) == CGAL::ON_POSITIVE_SIDE ? plane.opposite() : plane;
 }
 
+// adds plane unless planes holds it already; returns its index.
 template <class Plane>
-void add_unique(std::vector<Plane>& planes, const Plane& plane) {
-  if (std::find(planes.begin(), planes.end(), plane) == planes.end()) planes.push_back(plane);
+std::size_t add_unique(std::vector<Plane>& planes, const Plane& plane) {
+  const std::size_t index = std::find(planes.begin(), planes.end(), plane) - planes.begin();
+  if (index == planes.size()) planes.push_back(plane);
+  return index;
 }
 
 // point_shadow_volume's planes, built from the solid's vertices and its faces' planes as
-// given (Epeck's, or their exact rational values: the same planes in the same order).
-template <class Point, class Plane>
-std::vector<Plane> shadow_planes(const ConvexPolyhedron& solid, const std::vector<Point>& vertices,
-                                 const std::vector<Plane>& face_planes, const Point3& q,
-                                 const Point& at) {
-  std::vector<Plane> planes;
+// given (Epeck's, or their exact rational values: the same planes in the same order), into
+// planes: string(a, b, inside) adds the plane through q and each contour edge ab.
+template <class Point, class Plane, class String>
+void shadow_planes(const ConvexPolyhedron& solid, const std::vector<Point>& vertices,
+                   const std::vector<Plane>& face_planes, const Point3& q,
+                   std::vector<Plane>& planes, String string) {
   const std::vector<int> loop = contour(solid, q);
-  if (loop.empty()) return planes;
+  if (loop.empty()) return;
   const Point inside = inner_point(vertices);
   for (std::size_t i = 0; i < loop.size(); ++i)
-    add_unique(planes, plane_away_from(at, vertices[loop[i]], vertices[loop[(i + 1) % loop.size()]],
-                                       inside));
+    string(vertices[loop[i]], vertices[loop[(i + 1) % loop.size()]], inside);
   for (std::size_t f = 0; f < solid.faces().size(); ++f)
     if (turned_toward(solid.faces()[f], q)) add_unique(planes, face_planes[f]);
-  return planes;
 }
 
 // adds the plane through q and the edge ab away from inside, and when q is an open end of the
@@ -58,10 +59,8 @@ void add_string_plane(OpenVolume& volume, const Point3& q, const Point3& a, cons
   const Plane3 through(q, a, b);
   const bool flip = through.oriented_side(inside) == CGAL::ON_POSITIVE_SIDE;
   const Plane3 plane = flip ? through.opposite() : through;
-  add_unique(volume.planes, plane);
+  const std::size_t index = add_unique(volume.planes, plane);
   if (!into) return;
-  const std::size_t index =
-      std::find(volume.planes.begin(), volume.planes.end(), plane) - volume.planes.begin();
   const Plane3 limit(a, b, a + *into);  // normal (b - a) x d
   volume.limits.push_back({index, flip ? limit.opposite() : limit});
 }
@@ -133,22 +132,25 @@ OpenVolume point_shadow_volume(const ConvexPolyhedron& solid, const Point3& q,
                                const Vector3* into) {
   std::vector<Plane3> face_planes;
   for (const Face& face : solid.faces()) face_planes.push_back(face.plane);
-  OpenVolume volume{shadow_planes(solid, solid.vertices(), face_planes, q, q), {}};
-  if (into && !volume.planes.empty()) {
-    // The same string planes again (add_unique keeps each once), now with their limits.
-    const std::vector<int> loop = contour(solid, q);
-    const Point3 inside = inner_point(solid.vertices());
-    for (std::size_t i = 0; i < loop.size(); ++i)
-      add_string_plane(volume, q, solid.vertices()[loop[i]],
-                       solid.vertices()[loop[(i + 1) % loop.size()]], inside, into);
-  }
+  OpenVolume volume;
+  shadow_planes(solid, solid.vertices(), face_planes, q, volume.planes,
+                [&](const Point3& a, const Point3& b, const Point3& inside) {
+                  add_string_plane(volume, q, a, b, inside, into);
+                });
   return volume;
 }
 
 std::vector<RationalPlane3> exact_point_shadow_planes(
     const ConvexPolyhedron& solid, const std::vector<RationalPoint3>& vertices,
     const std::vector<RationalPlane3>& face_planes, const Point3& q) {
-  return shadow_planes(solid, vertices, face_planes, q, exact_value(q));
+  std::vector<RationalPlane3> planes;
+  const RationalPoint3& at = exact_value(q);
+  shadow_planes(
+      solid, vertices, face_planes, q, planes,
+      [&](const RationalPoint3& a, const RationalPoint3& b, const RationalPoint3& inside) {
+        add_unique(planes, plane_away_from(at, a, b, inside));
+      });
+  return planes;
 }
 
 std::pair<std::vector<int>, std::vector<int>> tangent_vertices(const ConvexPolyhedron& solid,
