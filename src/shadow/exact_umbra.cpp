@@ -649,7 +649,7 @@ class Sweep {
           volume.emplace_back(std::array<Interval, 3>{a * u[0] + b * u[1] + c * u[2],
                                                       a * v[0] + b * v[1] + c * v[2],
                                                       a * o[0] + b * o[1] + c * o[2] + h},
-                              [this, plane] { return on_face(face_.frame, *plane); });
+                              [frame = &face_.frame, plane] { return on_face(*frame, *plane); });
         }
         end_shadows_[end].push_back(std::move(volume));
       }
