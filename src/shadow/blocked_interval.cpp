@@ -111,8 +111,7 @@ RationalSolid rational_solid(const ConvexPolyhedron& solid) {
   for (const auto& edge : edges) result.edges.push_back(edge.first);
   for (const RationalPoint3& v : result.vertices) result.approx_vertices.push_back(enclosure(v));
   for (const RationalPlane3& plane : result.planes)
-    result.approx_planes.push_back(
-        {enclosure(plane.a()), enclosure(plane.b()), enclosure(plane.c()), enclosure(plane.d())});
+    result.approx_planes.push_back(enclosure(plane));
   return result;
 }
 

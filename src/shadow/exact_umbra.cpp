@@ -114,6 +114,10 @@ struct SweepLine {
 // What a cell of the sweep is: outside every shadow, penumbra, or umbra.
 enum Label : char { kLit = 0, kPenumbra = 1, kUmbra = 2 };
 
+// The labels of a column's cells by the curves (ids) below and above each: those of the last
+// column of a slab while they may carry over the next seam (Sweep::slab).
+using Carried = std::map<std::pair<int, int>, Label>;
+
 struct Curve {
   PencilCurve f;
   Quadratic2 q;
@@ -214,8 +218,7 @@ std::shared_ptr<const UmbraSolid> prepare_umbra_solid(const ConvexPolyhedron& so
     prepared->ends[end] = exact_point_shadow_planes(solid, prepared->solid.vertices,
                                                     prepared->solid.planes, end ? q2 : q1);
     for (const RationalPlane3& h : prepared->ends[end])
-      prepared->end_enclosures[end].push_back({detail::enclosure(h.a()), detail::enclosure(h.b()),
-                                               detail::enclosure(h.c()), detail::enclosure(h.d())});
+      prepared->end_enclosures[end].push_back(detail::enclosure(h));
   }
   const RationalVector3 d = prepared->q2 - prepared->q1;
   for (const RationalPoint3& v : prepared->solid.vertices) {
@@ -438,6 +441,7 @@ class Sweep {
     // Each slab asks only the lines whose reach in s holds its middle (the middles increase).
     std::vector<std::size_t> active, here;
     std::size_t next = 0;
+    Carried carried;
     for (std::size_t k = 0; k + 1 < seams.size(); ++k) {
       const Rational middle = detail::simplest_between(seams[k], seams[k + 1]);
       const Interval m = detail::enclosure(middle);
@@ -449,10 +453,9 @@ class Sweep {
       here = active;
       std::sort(here.begin(), here.end());
       // The last column's labels carry over the seam unless a line runs along it.
-      if (k == 0 || std::binary_search(along.begin(), along.end(), seams[k])) carried_.clear();
-      slab(sector, k, middle, here, line_curves, line_ids, line_enclosures);
+      if (std::binary_search(along.begin(), along.end(), seams[k])) carried.clear();
+      slab(sector, k, middle, here, line_curves, line_ids, line_enclosures, carried);
     }
-    carried_.clear();
   }
 
  private:
@@ -949,7 +952,7 @@ class Sweep {
   void slab(Sector& sector, std::size_t seam, const Rational& middle,
             const std::vector<std::size_t>& active, const std::vector<std::size_t>& line_curves,
             const std::vector<int>& line_ids,
-            const std::vector<detail::IntervalCurve>& line_enclosures) {
+            const std::vector<detail::IntervalCurve>& line_enclosures, Carried& carried) {
     const Pencil& pencil = sector.pencil;
     const Rational &sa = sector.seams[seam], &sb = sector.seams[seam + 1];
     // The lines that matter on this slab, in increasing r.
@@ -1043,9 +1046,9 @@ class Sweep {
         return std::find(roots->begin(), roots->end(), s) != roots->end();
       });
     };
-    if (on(along, low)) carried_.clear();
+    if (on(along, low)) carried.clear();
     const std::set<int> lines(straight.begin(), straight.end());
-    std::map<std::pair<int, int>, Label> before = std::move(carried_);  // by their curves
+    Carried before = std::move(carried);  // the last column's cells by their curves
     for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
       Column column;
       column.low = cuts[k];
@@ -1054,7 +1057,7 @@ class Sweep {
       const Rational& s = column.sample;
       std::vector<Rational> samples;  // a point r of each cell, from below
       order(pencil, s, straight, portions, column.curves, samples);
-      std::map<std::pair<int, int>, Label> here;
+      Carried here;
       for (std::size_t c = 0; c < samples.size(); ++c) {
         const bool between = c > 0 && c < column.curves.size();
         const std::pair<int, int> bounds =
@@ -1075,8 +1078,8 @@ class Sweep {
       impl_.cells += column.labels.size();
       sector.columns.push_back(std::move(column));
     }
-    carried_.clear();
-    if (!on(along, high)) carried_ = std::move(before);
+    carried.clear();
+    if (!on(along, high)) carried = std::move(before);
   }
 
   // true when the curves (ids) meet at s, or either has a pole there: exactly, unless their
@@ -1088,9 +1091,8 @@ class Sweep {
       const auto a = enclosed(curves.first).r(at), b = enclosed(curves.second).r(at);
       if (a && b && (a->sup() < b->inf() || b->sup() < a->inf())) return false;
     }
-    const PencilCurve &a = impl_.curves[curves.first].f, &b = impl_.curves[curves.second].f;
-    const Rational da = a.den(s), db = b.den(s);
-    return CGAL::is_zero(da) || CGAL::is_zero(db) || a.num(s) * db == b.num(s) * da;
+    const auto a = r_at(impl_.curves[curves.first], s), b = r_at(impl_.curves[curves.second], s);
+    return !a || !b || *a == *b;
   }
 
   // true when the curves (ids) may meet at the cut: two lines of the slab never do (they
@@ -1344,9 +1346,6 @@ class Sweep {
   std::unordered_map<std::pair<int, int>, Crossing, KeyHash> crossings_;
   std::vector<ConvexRing> umbrae_;  // empty: no single umbra
   bool lines_collected_ = false;
-  // the labels of the last column of the slab just swept, by the curves around each cell,
-  // while they may carry over the next seam (slab)
-  std::map<std::pair<int, int>, Label> carried_;
   std::vector<SweepLine> lines_;
   std::vector<Affine2> rays_;
   // per end of the source, per occluder: its point shadow volume's planes on the face (the

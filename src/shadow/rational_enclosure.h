@@ -8,6 +8,7 @@
 // by one fused multiply-add, whose sign says on which side of q the rational lies. Others go
 // to CGAL. Both give an interval that holds the rational; this one is at most one ulp wide.
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -26,6 +27,11 @@ inline Interval enclosure(const Rational& x) {
   if (remainder > 0) return Interval(q, std::nextafter(q, infinity));
   if (remainder < 0) return Interval(std::nextafter(q, -infinity), q);
   return Interval(q);
+}
+
+// the enclosures of a plane's coefficients a, b, c, d.
+inline std::array<Interval, 4> enclosure(const RationalPlane3& h) {
+  return {enclosure(h.a()), enclosure(h.b()), enclosure(h.c()), enclosure(h.d())};
 }
 
 }  // namespace penumbra::detail
