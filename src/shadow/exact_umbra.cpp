@@ -88,6 +88,11 @@ Affine2 on_face(const FaceFrame& frame, const RationalPlane3& plane) {
   return on_face(frame, RationalVector3(plane.a(), plane.b(), plane.c()), plane.d());
 }
 
+// the enclosures of a line's coefficients.
+std::array<Interval, 3> enclosures(const Affine2& line) {
+  return {detail::enclosure(line.d), detail::enclosure(line.e), detail::enclosure(line.f)};
+}
+
 // the line through a and b.
 Affine2 line_through(const RationalPoint2& a, const RationalPoint2& b) {
   return {a.y() - b.y(), b.x() - a.x(), a.x() * b.y() - a.y() * b.x()};
@@ -365,7 +370,7 @@ class Sweep {
 
   // false when the group's occluders surely hide the source together nowhere on the face
   // (W has no interior: may_hide_together), so no cell of its sweep is a joint part.
-  bool may_be_joint() const { return !end_shadows_[0].empty(); }
+  bool may_be_joint() const { return covered_whole_ ? impl_.joint : !end_shadows_[0].empty(); }
 
   void run(Sector& sector) {
     if (!lines_collected_) collect_lines();
@@ -656,7 +661,75 @@ class Sweep {
         }
         end_shadows_[end].push_back(std::move(volume));
       }
-    if (!detail::may_hide_together(impl_.face, end_shadows_, umbrae_)) end_shadows_ = {};
+    w_parts_ = detail::joint_parts(impl_.face, end_shadows_, umbrae_);
+    if (w_parts_.empty()) end_shadows_ = {};
+    if (!w_parts_.empty() && certify_whole_umbra()) {
+      // Every point of the face is umbra: the sweep needs only the face's edges.
+      prepared_.clear();
+      shadows_.clear();
+      umbrae_.clear();
+      end_shadows_ = {};
+      w_parts_.clear();
+      shadow_index_ = detail::BoxGrid();
+      return;
+    }
+    std::vector<std::array<Interval, 2>> boxes;
+    for (const auto& part : w_parts_) boxes.push_back(detail::box_of(part));
+    w_index_ = detail::BoxGrid(boxes);
+  }
+
+  // true when the intervals certify that every point of the face is umbra, and then
+  // impl_.joint says whether that takes two or more occluders. A convex occluder hides the
+  // point q of the source from every point of a convex piece when it hides it from the
+  // piece's corners (the points hiding q from it, its point shadow, are convex: section
+  // 4.2.2), so where the occluders' intervals hidden from all the corners of each piece
+  // (the intersection of their blocked intervals) cover the source, so do the intervals
+  // hidden from any point of the piece. A sufficient test only: where it fails, the sweep
+  // decides.
+  bool certify_whole_umbra() {
+    CGAL::Protect_FPU_rounding<true> upward;
+    bool joint = false;
+    for (const ConvexRing& piece : impl_.face.pieces()) {
+      if (piece.empty()) continue;
+      std::vector<std::pair<double, double>> hidden;  // within each occluder's, in doubles
+      bool single = false;
+      for (const auto& prepared : prepared_) {
+        const detail::IntervalSolid& solid = prepared->filter();
+        double low = 0, high = 1;
+        for (const auto& at : piece.enclosures()) {
+          IntervalPoint x;
+          for (int i = 0; i < 3; ++i)
+            x[i] = frame_[0][i] + at[0] * frame_[1][i] + at[1] * frame_[2][i];
+          const bool outside =
+              std::any_of(solid.planes.begin(), solid.planes.end(), [&](const auto& h) {
+                return (h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3]).inf() > 0;
+              });
+          const auto b = outside ? detail::blocked_bounds(solid, x, q1i_, q2i_) : std::nullopt;
+          if (!b || b->kind == BlockedInterval::Kind::none) {
+            low = 1, high = 0;
+            break;
+          }
+          if (b->kind == BlockedInterval::Kind::interval) {
+            low = std::max(low, b->low.sup());
+            high = std::min(high, b->high.inf());
+          }
+        }
+        if (low > high) continue;
+        hidden.emplace_back(low, high);
+        single = single || (low <= 0 && high >= 1);
+      }
+      std::sort(hidden.begin(), hidden.end());
+      double reach = 0;
+      for (const auto& [low, high] : hidden) {
+        if (low > reach) return false;
+        reach = std::max(reach, high);
+      }
+      if (reach < 1) return false;
+      joint = joint || !single;
+    }
+    impl_.joint = joint;
+    covered_whole_ = true;
+    return true;
   }
 
   // the lines of the sweep (made when it first runs: a face none of whose groups may hide
@@ -679,15 +752,32 @@ class Sweep {
       for (std::size_t k = 0; k < inner.size(); ++k)
         add_line(line_through(inner[k], inner[(k + 1) % inner.size()]),
                  {umbra, LineRole::kUmbra, o});
-      // The rest only matters in W.
+      // The rest only matters in W within the occluder's whole shadow: lines that miss every
+      // part of W meeting the shadow's box are left out.
       if (!in_w) continue;
+      std::vector<std::size_t> found;
+      w_index_.query(region->box(), found);
+      if (found.empty()) continue;
+      std::vector<detail::EnclosedPolygon> parts;
+      detail::EnclosedPolygon hull;  // all their corners: those parts lie in its hull
+      for (std::size_t k : found) {
+        parts.push_back(w_parts_[k]);
+        hull.insert(hull.end(), w_parts_[k].begin(), w_parts_[k].end());
+      }
       const UmbraSolid& prepared = *prepared_[o];
       for (int end = 0; end < 2; ++end)
         for (const detail::FilteredAffine& f : end_shadows_[end][o])
-          add_line(f.exact(), {region, LineRole::kJoint, o});
+          if (detail::may_meet(f.enclosures(), parts))
+            add_line(f.exact(), {region, LineRole::kJoint, o});
       for (const RationalPlane3& plane : prepared.solid.planes)
-        add_line(on_face(frame, plane), {region, LineRole::kJoint, o});
-      for (const RationalPlane3& ray : prepared.rays) rays_.push_back(on_face(frame, ray));
+        if (Affine2 line = on_face(frame, plane); detail::may_meet(enclosures(line), parts))
+          add_line(line, {region, LineRole::kJoint, o});
+      // A ray is a line of the pencil where an edge of the occluder's blocked interval
+      // changes: a slab holding those parts on both sides of it needs it as a seam, so it is
+      // left out only when it misses their hull.
+      for (const RationalPlane3& ray : prepared.rays)
+        if (Affine2 line = on_face(frame, ray); detail::may_meet(enclosures(line), {hull}))
+          rays_.push_back(std::move(line));
     }
   }
 
@@ -722,6 +812,7 @@ class Sweep {
     const auto in_face = impl_.face.maybe_contains(at);
     if (!in_face) return std::nullopt;
     if (!*in_face) return kLit;
+    if (covered_whole_) return kUmbra;
     const std::vector<std::size_t> candidates = near(at);
     std::vector<std::size_t> under;  // the occluders whose whole shadows hold the point
     for (std::size_t k : candidates) {
@@ -780,6 +871,7 @@ class Sweep {
   Label label_of(const RationalPoint2& point) {
     const Probe p(point);
     if (!impl_.face.contains(p)) return kLit;
+    if (covered_whole_) return kUmbra;
     const std::vector<std::size_t> under = holding(p);
     if (under.empty()) return kLit;
     if (std::any_of(under.begin(), under.end(),
@@ -1351,6 +1443,9 @@ class Sweep {
   // per end of the source, per occluder: its point shadow volume's planes on the face (the
   // points hiding that end are those where every one is <= 0; none: it hides nothing).
   std::array<std::vector<detail::EndShadow>, 2> end_shadows_;
+  std::vector<detail::EnclosedPolygon> w_parts_;  // W lies in their union (joint_parts)
+  bool covered_whole_ = false;  // every point of the face is umbra (certify_whole_umbra)
+  detail::BoxGrid w_index_;     // of their boxes
 };
 
 // Appends the points of a curve of the sweep within tolerance (world units) of it: each

@@ -263,10 +263,11 @@ std::vector<std::size_t> own_umbrae_first(std::size_t a, std::size_t b, std::siz
   return order;
 }
 
-}  // namespace
-
-bool may_hide_together(const FaceRegion& face, const std::array<std::vector<EndShadow>, 2>& ends,
-                       const std::vector<ConvexRing>& umbrae) {
+// calls found(both) for each polygon piece ∩ PS1(a) ∩ PS2(b) with interior outside every
+// single umbra, in order, while it returns true.
+template <typename Found>
+void each_joint_part(const FaceRegion& face, const std::array<std::vector<EndShadow>, 2>& ends,
+                     const std::vector<ConvexRing>& umbrae, Found found) {
   CGAL::Protect_FPU_rounding<true> upward;
   std::vector<Box> umbra_boxes;
   for (const ConvexRing& umbra : umbrae) umbra_boxes.push_back(box_of(corners(umbra)));
@@ -289,11 +290,54 @@ bool may_hide_together(const FaceRegion& face, const std::array<std::vector<EndS
           continue;
         const Polygon both = clip_to(hidden[0][a], ends[1][b]);
         if (both.empty()) continue;
-        if (sticks_out(both, umbrae, umbra_boxes, own_umbrae_first(a, b, umbrae.size()), 0))
-          return true;
+        if (sticks_out(both, umbrae, umbra_boxes, own_umbrae_first(a, b, umbrae.size()), 0) &&
+            !found(both))
+          return;
       }
   }
-  return false;
+}
+
+}  // namespace
+
+bool may_hide_together(const FaceRegion& face, const std::array<std::vector<EndShadow>, 2>& ends,
+                       const std::vector<ConvexRing>& umbrae) {
+  bool any = false;
+  each_joint_part(face, ends, umbrae, [&](const Polygon&) { return !(any = true); });
+  return any;
+}
+
+std::vector<EnclosedPolygon> joint_parts(const FaceRegion& face,
+                                         const std::array<std::vector<EndShadow>, 2>& ends,
+                                         const std::vector<ConvexRing>& umbrae) {
+  std::vector<EnclosedPolygon> parts;
+  each_joint_part(face, ends, umbrae, [&](const Polygon& both) {
+    EnclosedPolygon corners;
+    for (const Vertex& v : both) corners.push_back(v.at());
+    parts.push_back(std::move(corners));
+    return true;
+  });
+  return parts;
+}
+
+std::array<Interval, 2> box_of(const EnclosedPolygon& polygon) {
+  std::array<Interval, 2> box = polygon.front();
+  for (const auto& at : polygon)
+    for (int i = 0; i < 2; ++i)
+      box[i] = Interval(std::min(box[i].inf(), at[i].inf()), std::max(box[i].sup(), at[i].sup()));
+  return box;
+}
+
+bool may_meet(const std::array<Interval, 3>& line, const std::vector<EnclosedPolygon>& polygons) {
+  CGAL::Protect_FPU_rounding<true> upward;
+  return std::any_of(polygons.begin(), polygons.end(), [&](const EnclosedPolygon& polygon) {
+    bool below = false, above = false;  // a corner's box that may reach either side
+    for (const auto& at : polygon) {
+      const Interval value = line[0] * at[0] + line[1] * at[1] + line[2];
+      below = below || value.inf() <= 0;
+      above = above || value.sup() >= 0;
+    }
+    return below && above;
+  });
 }
 
 }  // namespace penumbra::detail

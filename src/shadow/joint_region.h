@@ -28,4 +28,22 @@ using EndShadow = std::vector<FilteredAffine>;
 bool may_hide_together(const FaceRegion& face, const std::array<std::vector<EndShadow>, 2>& ends,
                        const std::vector<ConvexRing>& umbrae);
 
+// A convex polygon of the face's frame by the enclosures of its corners (each exact corner
+// lies in its box), so the polygon lies in the convex hull of the boxes.
+using EnclosedPolygon = std::vector<std::array<Interval, 2>>;
+
+// The same test, going on past the first: the polygons piece ∩ PS1(a) ∩ PS2(b) that stick
+// out of the single umbrae, for every piece and pair (a, b). The interior of W lies in their
+// union; none when may_hide_together is false.
+std::vector<EnclosedPolygon> joint_parts(const FaceRegion& face,
+                                         const std::array<std::vector<EndShadow>, 2>& ends,
+                                         const std::vector<ConvexRing>& umbrae);
+
+// the box of the polygon's corners' boxes (needs upward rounding).
+std::array<Interval, 2> box_of(const EnclosedPolygon& polygon);
+
+// false when the intervals show that the line (its coefficients enclosed: d x + e y + f)
+// misses every polygon, closed (needs upward rounding).
+bool may_meet(const std::array<Interval, 3>& line, const std::vector<EnclosedPolygon>& polygons);
+
 }  // namespace penumbra::detail

@@ -45,17 +45,42 @@ Ring2 rectangle(Exact x0, Exact y0, Exact x1, Exact y1) {
 
 const Ring2 unit = rectangle(0, 0, 1, 1);
 
-// may_hide_together on the unit square with the first end hidden by the rings first[k] and
-// the second by second[k] (an empty ring: that occluder hides nothing of that end).
+// The test's input: the first end hidden by the rings first[k] and the second by second[k]
+// (an empty ring: that occluder hides nothing of that end), the umbrae, and the face.
+struct Input {
+  Input(const std::vector<Ring2>& first, const std::vector<Ring2>& second,
+        const std::vector<Ring2>& umbrae, const Ring2& face)
+      : piece(rational_ring(face)) {
+    for (const Ring2& r : first) ends[0].push_back(r.empty() ? EndShadow{} : inside_of(r));
+    for (const Ring2& r : second) ends[1].push_back(r.empty() ? EndShadow{} : inside_of(r));
+    for (const Ring2& r : umbrae) rings.push_back(rational_ring(r));
+  }
+  std::array<std::vector<EndShadow>, 2> ends;
+  std::vector<ConvexRing> rings;
+  ConvexRing piece;
+};
+
+// may_hide_together on that input (the unit square unless a face is given).
 bool may(const std::vector<Ring2>& first, const std::vector<Ring2>& second,
          const std::vector<Ring2>& umbrae, const Ring2& face = unit) {
-  std::array<std::vector<EndShadow>, 2> ends;
-  for (const Ring2& r : first) ends[0].push_back(r.empty() ? EndShadow{} : inside_of(r));
-  for (const Ring2& r : second) ends[1].push_back(r.empty() ? EndShadow{} : inside_of(r));
-  std::vector<ConvexRing> rings;
-  for (const Ring2& r : umbrae) rings.push_back(rational_ring(r));
-  const ConvexRing piece = rational_ring(face);
-  return detail::may_hide_together(detail::FaceRegion(piece), ends, rings);
+  const Input in(first, second, umbrae, face);
+  return detail::may_hide_together(detail::FaceRegion(in.piece), in.ends, in.rings);
+}
+
+// joint_parts on the same input.
+std::vector<detail::EnclosedPolygon> parts(const std::vector<Ring2>& first,
+                                           const std::vector<Ring2>& second,
+                                           const std::vector<Ring2>& umbrae, const Ring2& face) {
+  const Input in(first, second, umbrae, face);
+  return detail::joint_parts(detail::FaceRegion(in.piece), in.ends, in.rings);
+}
+
+// may_meet for the line through p with direction (dx, dy), its coefficients made exactly.
+bool meets(const Point2& p, const Exact& dx, const Exact& dy,
+           const std::vector<detail::EnclosedPolygon>& polygons) {
+  const Exact d = dy, e = -dx, f = -(d * p.x() + e * p.y());
+  return detail::may_meet({CGAL::to_interval(d), CGAL::to_interval(e), CGAL::to_interval(f)},
+                          polygons);
 }
 
 // may_hide_together against Polygon_set_2 on random scenes whose points are the images by
@@ -83,7 +108,7 @@ void agrees_with_polygon_set_2(const Map& map) {
   };
   const Ring2 face = {map(Point2(1, 0)), map(Point2(12, 2)), map(Point2(10, 12)),
                       map(Point2(0, 9))};
-  int yes = 0, no = 0, covered = 0;
+  int yes = 0, no = 0, covered = 0, lines = 0;
   for (int iteration = 0; iteration < penumbra::test::samples(1000); ++iteration) {
     const std::size_t n = 2 + iteration % 3;
     std::vector<Ring2> first, second, umbrae;
@@ -106,6 +131,21 @@ void agrees_with_polygon_set_2(const Map& map) {
     const bool expected = !w.empty() && CGAL::is_positive(w.area);
     const bool got = may(first, second, umbrae, face);
     BOOST_TEST(got == expected, "iteration " << iteration);
+    // joint_parts agrees, and no line through a corner of W (in its closure) is said to
+    // miss the parts: the sweep keeps every line that can pass through W. A line beyond the
+    // face misses them.
+    const auto found = parts(first, second, umbrae, face);
+    BOOST_TEST(found.empty() == !expected, "iteration " << iteration);
+    for (const Polygon2& part : w.polygons)
+      for (const Point2& corner : part.outer)
+        for (const auto& [dx, dy] : {std::pair<int, int>{1, 0}, {0, 1}, {1, 1}, {2, -1}}) {
+          BOOST_TEST(meets(corner, dx, dy, found), "iteration " << iteration);
+          ++lines;
+        }
+    if (!found.empty()) {
+      const Point2 far = map(Point2(20, 20));
+      BOOST_TEST(!meets(far, 1, -1, found), "iteration " << iteration);
+    }
     (expected ? yes : no) += 1;
     if (!expected && !pairs.empty()) ++covered;
   }
@@ -115,6 +155,7 @@ void agrees_with_polygon_set_2(const Map& map) {
   BOOST_TEST(yes >= penumbra::test::samples(100));
   BOOST_TEST(no >= penumbra::test::samples(100));
   BOOST_TEST(covered >= penumbra::test::samples(50));
+  BOOST_TEST(lines >= penumbra::test::samples(400));
 }
 
 }  // namespace
