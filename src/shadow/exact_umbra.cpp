@@ -682,54 +682,72 @@ class Sweep {
   // impl_.joint says whether that takes two or more occluders. A convex occluder hides the
   // point q of the source from every point of a convex piece when it hides it from the
   // piece's corners (the points hiding q from it, its point shadow, are convex: section
-  // 4.2.2), so where the occluders' intervals hidden from all the corners of each piece
-  // (the intersection of their blocked intervals) cover the source, so do the intervals
-  // hidden from any point of the piece. A sufficient test only: where it fails, the sweep
-  // decides.
+  // 4.2.2), so where the parts of the source that each occluder hides from all the corners
+  // (the intersection of their blocked intervals, enclosed from within) cover the source,
+  // the piece is umbra. The umbra is closed, so a corner that surely sees some of the
+  // source ends the test at once. A sufficient test only: where it fails, the sweep decides.
   bool certify_whole_umbra() {
     CGAL::Protect_FPU_rounding<true> upward;
     bool joint = false;
     for (const ConvexRing& piece : impl_.face.pieces()) {
       if (piece.empty()) continue;
-      std::vector<std::pair<double, double>> hidden;  // within each occluder's, in doubles
-      bool single = false;
-      for (const auto& prepared : prepared_) {
-        const detail::IntervalSolid& solid = prepared->filter();
-        double low = 0, high = 1;
-        for (const auto& at : piece.enclosures()) {
-          IntervalPoint x;
-          for (int i = 0; i < 3; ++i)
-            x[i] = frame_[0][i] + at[0] * frame_[1][i] + at[1] * frame_[2][i];
-          const bool outside =
-              std::any_of(solid.planes.begin(), solid.planes.end(), [&](const auto& h) {
-                return (h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3]).inf() > 0;
-              });
-          const auto b = outside ? detail::blocked_bounds(solid, x, q1i_, q2i_) : std::nullopt;
-          if (!b || b->kind == BlockedInterval::Kind::none) {
-            low = 1, high = 0;
-            break;
-          }
-          if (b->kind == BlockedInterval::Kind::interval) {
-            low = std::max(low, b->low.sup());
-            high = std::min(high, b->high.inf());
-          }
+      std::vector<std::pair<double, double>> within(prepared_.size(), {0, 1});
+      for (std::size_t c = 0; c < piece.size(); ++c) {
+        std::vector<std::pair<double, double>> around;
+        for (std::size_t k = 0; k < prepared_.size(); ++k) {
+          const Hidden h = hidden_from(*prepared_[k], piece.enclosures()[c], piece.points()[c]);
+          within[k] = {std::max(within[k].first, h.low), std::min(within[k].second, h.high)};
+          around.emplace_back(h.outer_low, h.outer_high);
         }
-        if (low > high) continue;
-        hidden.emplace_back(low, high);
-        single = single || (low <= 0 && high >= 1);
+        if (!cover(around)) return false;
       }
-      std::sort(hidden.begin(), hidden.end());
-      double reach = 0;
-      for (const auto& [low, high] : hidden) {
-        if (low > reach) return false;
-        reach = std::max(reach, high);
-      }
-      if (reach < 1) return false;
-      joint = joint || !single;
+      if (!cover(within)) return false;
+      joint = joint || std::none_of(within.begin(), within.end(),
+                                    [](const auto& w) { return w.first <= 0 && w.second >= 1; });
     }
     impl_.joint = joint;
     covered_whole_ = true;
     return true;
+  }
+
+  // What an occluder hides of the source from a corner of the face (at encloses it): what
+  // it surely hides (low, high; empty when low > high) and a superset of it (outer; [0, 1]
+  // when unknown). From the interval filter, else from the exact clipping (for a corner on
+  // the solid's boundary that counts only the directions strictly into the solid, fewer than
+  // the closed solid hides). Needs upward rounding.
+  struct Hidden {
+    double low = 1, high = 0;
+    double outer_low = 0, outer_high = 1;
+  };
+  Hidden hidden_from(const UmbraSolid& prepared, const std::array<Interval, 2>& at,
+                     const RationalPoint2& corner) {
+    const detail::IntervalSolid& solid = prepared.filter();
+    IntervalPoint x;
+    for (int i = 0; i < 3; ++i) x[i] = frame_[0][i] + at[0] * frame_[1][i] + at[1] * frame_[2][i];
+    const bool outside = std::any_of(solid.planes.begin(), solid.planes.end(), [&](const auto& h) {
+      return (h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3]).inf() > 0;
+    });
+    if (const auto b = outside ? detail::blocked_bounds(solid, x, q1i_, q2i_) : std::nullopt) {
+      if (b->kind == BlockedInterval::Kind::none) return {1, 0, 1, 0};
+      if (b->kind == BlockedInterval::Kind::full) return {0, 1, 0, 1};
+      return {b->low.sup(), b->high.inf(), b->low.inf(), b->high.sup()};
+    }
+    const BlockedInterval b = detail::blocked_interval(prepared.solid, world(corner), q1_, q2_);
+    if (b.kind == BlockedInterval::Kind::none) return {1, 0, 1, 0};
+    const Interval low = detail::enclosure(b.low), high = detail::enclosure(b.high);
+    return {low.sup(), high.inf(), low.inf(), high.sup()};
+  }
+
+  // true when the closed intervals (pairs low, high; empty ones skipped) cover [0, 1].
+  static bool cover(std::vector<std::pair<double, double>> intervals) {
+    std::sort(intervals.begin(), intervals.end());
+    double reach = 0;
+    for (const auto& [low, high] : intervals) {
+      if (low > high) continue;
+      if (low > reach) return false;
+      reach = std::max(reach, high);
+    }
+    return reach >= 1;
   }
 
   // the lines of the sweep (made when it first runs: a face none of whose groups may hide

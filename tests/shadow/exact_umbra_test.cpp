@@ -693,20 +693,23 @@ BOOST_AUTO_TEST_CASE(an_l_shaped_occluder_in_two_pieces_and_a_row_of_slats) {
 }
 
 // A face wholly in the joint umbra (the sweep's certificate, certify_whole_umbra): the
-// square |x|, |y| <= 1/8 at z = 0 under the tube (2t - 1, 0, 10); box A (x <= 3/8,
-// 4 <= z <= 5) and box B (x >= -3/8, 6 <= z <= 7), both across |y| <= 1. The sight line
-// from P = (p, y, 0) to (q, 0, 10) is at x(z) = p + (q - p) z / 10, so A hides q where
-// min(x(4), x(5)) <= 3/8: for every p in [-1/8, 1/8] at least q <= 3/4 (p = 1/8, z = 4);
-// B hides q where max(x(6), x(7)) >= -3/8: at least q >= -13/24 (p = -1/8, z = 6).
-// Together they hide the whole tube from every point of the square; alone neither does (A
-// lets q = 1 through, B q = -1). With B at x >= 5/8 instead, from p = 1/8 it hides only
-// q >= 47/56 (z = 7) and A q <= 3/4: the tube shows between them there, while from
-// p = -1/8 A alone hides q <= 9/8, all of it. The certificate must not fire on that face.
+// square |x|, |y| <= 1/8 at z = 0 under the tube (2t - 1, 0, 8); box A (x <= 3/8,
+// -1 <= y <= 1/16, 4 <= z <= 5) and box B (x >= -3/8, |y| <= 1, 6 <= z <= 7). The sight line
+// from P = (p, y, 0) to (q, 0, 8) is at x(z) = p + (q - p) z / 8 and y(z) = y (1 - z / 8), within
+// both boxes' y (A's top y = 1/16 is reached at z = 4 from y = 1/8: the corners with y = 1/8
+// lie on the planes through the tube's line and A's top corners, where the interval filter
+// cannot decide and the exact clipping does). A hides q where min(x(4), x(5)) <= 3/8: for
+// every p in [-1/8, 1/8] at least q <= 5/8 (p = 1/8, z = 4); B hides q where
+// max(x(6), x(7)) >= -3/8: at least q >= -11/24 (p = -1/8, z = 6). Together they hide the
+// whole tube from every point of the square; alone neither does (A lets q = 1 through, B
+// q = -1). With B at x >= 5/8 instead, from p = 1/8 it hides only q >= 39/56 (z = 7) and A
+// q <= 5/8: the tube shows between them there, while from p = -1/8 A hides q <= 7/8 and B
+// q >= 41/56, all of it. The certificate must not fire on that face.
 BOOST_AUTO_TEST_CASE(a_face_wholly_in_a_joint_umbra_is_the_whole_face) {
   const ConvexPolyhedron slab = box(-0.125, -0.125, -1, 0.125, 0.125, 0);
   const Face& face = face_with_plane(slab, Plane3(0, 0, 1, 0));
-  const Point3 q1(-1, 0, 10), q2(1, 0, 10);
-  const ConvexPolyhedron a = box(-3, -1, 4, 0.375, 1, 5);
+  const Point3 q1(-1, 0, 8), q2(1, 0, 8);
+  const ConvexPolyhedron a = box(-3, -1, 4, 0.375, 0.0625, 5);
   const std::vector<ConvexPolyhedron> covering{a, box(-0.375, -1, 6, 3, 1, 7)};
   const ExactUmbra whole = umbra_of(face, q1, q2, covering);
   BOOST_TEST(whole.joint());
