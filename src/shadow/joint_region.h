@@ -39,11 +39,11 @@ std::vector<EnclosedPolygon> joint_parts(const FaceRegion& face,
                                          const std::array<std::vector<EndShadow>, 2>& ends,
                                          const std::vector<ConvexRing>& umbrae);
 
-// the box of the polygon's corners' boxes (needs upward rounding).
+// the box of the polygon's corners' boxes.
 std::array<Interval, 2> box_of(const EnclosedPolygon& polygon);
 
 // false when the intervals show that the line (its coefficients enclosed: d x + e y + f)
-// misses every polygon, closed (needs upward rounding).
+// misses every polygon, closed: every corner's box lies strictly on one side of it.
 bool may_meet(const std::array<Interval, 3>& line, const std::vector<EnclosedPolygon>& polygons);
 
 }  // namespace penumbra::detail

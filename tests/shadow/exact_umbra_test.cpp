@@ -718,8 +718,24 @@ BOOST_AUTO_TEST_CASE(a_face_wholly_in_a_joint_umbra_is_the_whole_face) {
   BOOST_TEST(whole.penumbra_polygons().empty());
   BOOST_TEST_REQUIRE(whole.umbra_polygons().size() == 1u);
   BOOST_TEST(whole.umbra_polygons()[0].outer.points.size() == 4u);  // the face's corners only
+  // Certified, the sweep ran with the face's edges alone: one slab of three cells (with the
+  // boxes' lines it cuts 13).
+  BOOST_TEST(whole.cells() <= 3u);
   int mismatches = 0;
   BOOST_TEST(compare_with_oracle(face, q1, q2, covering, whole, 400, 31, &mismatches) > 0);
+  // A wall C (1/8 <= x <= 1/4, z <= 3) standing on the square's plane along its edge x = 1/8
+  // takes B's place. From the corners on that edge (on C's boundary, where only the exact
+  // blocked interval decides) the directions strictly into C hide q > 1/8; from those at
+  // p = -1/8 the sight line reaches x = 1/8 below z = 3 when q >= 13/24. C hides at least
+  // q >= 13/24 from every corner and A q <= 5/8: together, again, the whole tube.
+  const std::vector<ConvexPolyhedron> wall{a, box(0.125, -1, 0, 0.25, 1, 3)};
+  const ExactUmbra walled = umbra_of(face, q1, q2, wall);
+  BOOST_TEST(walled.joint());
+  BOOST_TEST(walled.cells() <= 3u);
+  BOOST_TEST(walled.area() == CGAL::to_double(face.area), boost::test_tools::tolerance(1e-12));
+  BOOST_TEST_REQUIRE(walled.umbra_polygons().size() == 1u);
+  BOOST_TEST(walled.umbra_polygons()[0].outer.points.size() == 4u);
+  BOOST_TEST(compare_with_oracle(face, q1, q2, wall, walled, 400, 33, &mismatches) > 0);
   const std::vector<ConvexPolyhedron> gap{a, box(0.625, -1, 6, 3, 1, 7)};
   const ExactUmbra partial = umbra_of(face, q1, q2, gap);
   BOOST_TEST(partial.area() > 0);
