@@ -369,7 +369,7 @@ class Sweep {
   }
 
   // false when the group's occluders surely hide the source together nowhere on the face
-  // (W has no interior: may_hide_together), so no cell of its sweep is a joint part.
+  // (W has no interior: joint_parts), so no cell of its sweep is a joint part.
   bool may_be_joint() const { return covered_whole_ ? impl_.joint : !end_shadows_[0].empty(); }
 
   void run(Sector& sector) {
@@ -631,10 +631,7 @@ class Sweep {
         known.roles.push_back(role);
         return;
       }
-    lines_.push_back(
-        {unit,
-         {role},
-         {detail::enclosure(unit.d), detail::enclosure(unit.e), detail::enclosure(unit.f)}});
+    lines_.push_back({unit, {role}, enclosures(unit)});
   }
 
   // the point shadows of the source's ends on the face, kept when the occluders may hide
@@ -712,7 +709,8 @@ class Sweep {
 
   // What an occluder hides of the source from a corner of the face (at encloses it): what
   // it surely hides (low, high; empty when low > high) and a superset of it (outer; [0, 1]
-  // when unknown). From the interval filter, else from the exact clipping (for a corner on
+  // when unknown). From the interval filter (which needs the corner surely outside the
+  // solid), else from the exact clipping (for a corner on
   // the solid's boundary that counts only the directions strictly into the solid, fewer than
   // the closed solid hides). Needs upward rounding.
   struct Hidden {
@@ -721,13 +719,7 @@ class Sweep {
   };
   Hidden hidden_from(const UmbraSolid& prepared, const std::array<Interval, 2>& at,
                      const RationalPoint2& corner) {
-    const detail::IntervalSolid& solid = prepared.filter();
-    IntervalPoint x;
-    for (int i = 0; i < 3; ++i) x[i] = frame_[0][i] + at[0] * frame_[1][i] + at[1] * frame_[2][i];
-    const bool outside = std::any_of(solid.planes.begin(), solid.planes.end(), [&](const auto& h) {
-      return (h[0] * x[0] + h[1] * x[1] + h[2] * x[2] + h[3]).inf() > 0;
-    });
-    if (const auto b = outside ? detail::blocked_bounds(solid, x, q1i_, q2i_) : std::nullopt) {
+    if (const auto b = detail::blocked_bounds(prepared.filter(), world(at), q1i_, q2i_)) {
       if (b->kind == BlockedInterval::Kind::none) return {1, 0, 1, 0};
       if (b->kind == BlockedInterval::Kind::full) return {0, 1, 0, 1};
       return {b->low.sup(), b->high.inf(), b->low.inf(), b->high.sup()};
@@ -803,6 +795,13 @@ class Sweep {
 
   RationalPoint3 world(const RationalPoint2& p) const { return face_.frame.to_world(p); }
 
+  // the enclosure of the world point at a point of the face enclosed by at (upward rounding).
+  IntervalPoint world(const std::array<Interval, 2>& at) const {
+    IntervalPoint x;
+    for (int i = 0; i < 3; ++i) x[i] = frame_[0][i] + at[0] * frame_[1][i] + at[1] * frame_[2][i];
+    return x;
+  }
+
   // returns the id of the curve r = -num / den of this sector, registering it when new: one
   // id per curve (num and den have no common factor, so dividing both by den's leading
   // coefficient makes the pair unique), so that a degenerate conic along a line of the sweep
@@ -868,8 +867,7 @@ class Sweep {
       if (!any) return kPenumbra;
     }
     // covered(): the blocked intervals at the world point
-    IntervalPoint x;
-    for (int i = 0; i < 3; ++i) x[i] = frame_[0][i] + at[0] * frame_[1][i] + at[1] * frame_[2][i];
+    const IntervalPoint x = world(at);
     std::vector<detail::BlockedBounds> bounds;
     for (std::size_t k : under) {
       const auto b = detail::blocked_bounds(prepared_[k]->filter(), x, q1i_, q2i_);

@@ -16,7 +16,7 @@ namespace {
 // A line of the test: the function d x + e y + f, <= 0 on its inside, as the enclosures of
 // its coefficients, with the rational function made when needed: an end's point shadow's
 // own (filtered) function, or the one on the left of a ring's edge. Its intervals, like the
-// vertices', need upward rounding (may_hide_together sets it).
+// vertices', need upward rounding (joint_parts sets it).
 class Line {
  public:
   explicit Line(const FilteredAffine& f) : approx_(f.enclosures()), filtered_(&f) {}
@@ -263,12 +263,13 @@ std::vector<std::size_t> own_umbrae_first(std::size_t a, std::size_t b, std::siz
   return order;
 }
 
-// calls found(both) for each polygon piece ∩ PS1(a) ∩ PS2(b) with interior outside every
-// single umbra, in order, while it returns true.
-template <typename Found>
-void each_joint_part(const FaceRegion& face, const std::array<std::vector<EndShadow>, 2>& ends,
-                     const std::vector<ConvexRing>& umbrae, Found found) {
+}  // namespace
+
+std::vector<EnclosedPolygon> joint_parts(const FaceRegion& face,
+                                         const std::array<std::vector<EndShadow>, 2>& ends,
+                                         const std::vector<ConvexRing>& umbrae) {
   CGAL::Protect_FPU_rounding<true> upward;
+  std::vector<EnclosedPolygon> parts;
   std::vector<Box> umbra_boxes;
   for (const ConvexRing& umbra : umbrae) umbra_boxes.push_back(box_of(corners(umbra)));
   const std::size_t n = ends[0].size();
@@ -290,32 +291,13 @@ void each_joint_part(const FaceRegion& face, const std::array<std::vector<EndSha
           continue;
         const Polygon both = clip_to(hidden[0][a], ends[1][b]);
         if (both.empty()) continue;
-        if (sticks_out(both, umbrae, umbra_boxes, own_umbrae_first(a, b, umbrae.size()), 0) &&
-            !found(both))
-          return;
+        if (!sticks_out(both, umbrae, umbra_boxes, own_umbrae_first(a, b, umbrae.size()), 0))
+          continue;
+        EnclosedPolygon corners;
+        for (const Vertex& v : both) corners.push_back(v.at());
+        parts.push_back(std::move(corners));
       }
   }
-}
-
-}  // namespace
-
-bool may_hide_together(const FaceRegion& face, const std::array<std::vector<EndShadow>, 2>& ends,
-                       const std::vector<ConvexRing>& umbrae) {
-  bool any = false;
-  each_joint_part(face, ends, umbrae, [&](const Polygon&) { return !(any = true); });
-  return any;
-}
-
-std::vector<EnclosedPolygon> joint_parts(const FaceRegion& face,
-                                         const std::array<std::vector<EndShadow>, 2>& ends,
-                                         const std::vector<ConvexRing>& umbrae) {
-  std::vector<EnclosedPolygon> parts;
-  each_joint_part(face, ends, umbrae, [&](const Polygon& both) {
-    EnclosedPolygon corners;
-    for (const Vertex& v : both) corners.push_back(v.at());
-    parts.push_back(std::move(corners));
-    return true;
-  });
   return parts;
 }
 

@@ -20,21 +20,16 @@ namespace penumbra::detail {
 // set where every function is <= 0 (no function: the occluder hides nothing of that end).
 using EndShadow = std::vector<FilteredAffine>;
 
-// returns true when W can hold interior points of the face: some piece of the face and
-// PS1(a) ∩ PS2(b), for occluders a and b, share interior points outside every single umbra
-// (umbrae[k]; label_of finds a point there in an umbra first, and for a = b the set is a's
-// umbra, unless the source was clipped to the face's side after the umbrae were made).
-// ends[e][k] is the point shadow of end e by occluder k.
-bool may_hide_together(const FaceRegion& face, const std::array<std::vector<EndShadow>, 2>& ends,
-                       const std::vector<ConvexRing>& umbrae);
-
 // A convex polygon of the face's frame by the enclosures of its corners (each exact corner
 // lies in its box), so the polygon lies in the convex hull of the boxes.
 using EnclosedPolygon = std::vector<std::array<Interval, 2>>;
 
-// The same test, going on past the first: the polygons piece ∩ PS1(a) ∩ PS2(b) that stick
-// out of the single umbrae, for every piece and pair (a, b). The interior of W lies in their
-// union; none when may_hide_together is false.
+// returns the polygons piece ∩ PS1(a) ∩ PS2(b), for every piece of the face and occluders a
+// and b, that share interior points with the face outside every single umbra (umbrae[k];
+// label_of finds a point there in an umbra first, and for a = b the set is a's umbra, unless
+// the source was clipped to the face's side after the umbrae were made). ends[e][k] is the
+// point shadow of end e by occluder k. W's interior lies in their union; none: W has no
+// interior on the face.
 std::vector<EnclosedPolygon> joint_parts(const FaceRegion& face,
                                          const std::array<std::vector<EndShadow>, 2>& ends,
                                          const std::vector<ConvexRing>& umbrae);

@@ -718,8 +718,9 @@ BOOST_AUTO_TEST_CASE(a_face_wholly_in_a_joint_umbra_is_the_whole_face) {
   BOOST_TEST(whole.penumbra_polygons().empty());
   BOOST_TEST_REQUIRE(whole.umbra_polygons().size() == 1u);
   BOOST_TEST(whole.umbra_polygons()[0].outer.points.size() == 4u);  // the face's corners only
-  // Certified, the sweep ran with the face's edges alone: one slab of three cells (with the
-  // boxes' lines it cuts 13).
+  // Certified, the sweep ran with the face's edges alone. The tube is parallel to the face,
+  // so the pencil's lines run along x; the edges y = +-1/8 are two of them (the seams of one
+  // slab) and x = +-1/8 cross each line once: three cells along it, the middle one the face.
   BOOST_TEST(whole.cells() <= 3u);
   int mismatches = 0;
   BOOST_TEST(compare_with_oracle(face, q1, q2, covering, whole, 400, 31, &mismatches) > 0);
