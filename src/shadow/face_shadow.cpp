@@ -36,10 +36,10 @@ FaceShadow unlit_face(const Face& face) {
   return result;
 }
 
-FaceShadow unite_shadows(const Face& face, std::vector<OccluderShadow> occluders) {
+FaceShadow unite_shadows(const Face& face, std::vector<OccluderShadow> occluders, bool lit) {
   FaceShadow result;
   if (occluders.empty()) {
-    result.lit = face_region(face);
+    if (lit) result.lit = face_region(face);
     return result;
   }
   const Ring2& ring = face.ring;
@@ -58,6 +58,11 @@ FaceShadow unite_shadows(const Face& face, std::vector<OccluderShadow> occluders
   // Shadow polygons strictly apart are their own union, and the lit part then needs
   // no arrangement in the usual configurations (convex_difference.h).
   const auto groups = detail::touching_groups(polygons);
+  if (!lit) {
+    result.shadow = detail::unite_groups(polygons, groups);
+    result.occluders = std::move(occluders);
+    return result;
+  }
   if (window && groups.size() == polygons.size()) {
     if (auto lit = detail::convex_difference(*window, polygons)) {
       std::vector<Polygon2> parts;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <iterator>
 #include <numeric>
+#include <optional>
 
 #include <CGAL/Polygon_set_2.h>
 
@@ -153,11 +154,12 @@ bool touches(const Polygon& polygon, const Ring2& window) {
 
 }  // namespace
 
-std::pair<Region2, Region2> unite_and_complement(
-    const std::vector<Ring2>& rings, const std::vector<std::vector<std::size_t>>& groups,
-    const Ring2& window) {
-  // Each group's union on its own: groups are strictly apart, so their pieces are the
-  // faces the union of all rings has.
+namespace {
+
+// returns each group's union on its own (across threads): groups are strictly apart, so
+// their pieces are the faces the union of all rings has.
+std::vector<std::vector<PolygonWithHoles>> group_pieces(
+    const std::vector<Ring2>& rings, const std::vector<std::vector<std::size_t>>& groups) {
   std::vector<std::vector<PolygonWithHoles>> pieces(groups.size());
   for_each_index(groups.size(), true, [&](std::size_t g) {
     if (groups[g].size() == 1) {
@@ -169,6 +171,41 @@ std::pair<Region2, Region2> unite_and_complement(
     for (std::size_t k : groups[g]) members.push_back(rings[k]);
     join(members).polygons_with_holes(std::back_inserter(pieces[g]));
   });
+  return pieces;
+}
+
+// returns parts as a canonical region (with area when given).
+Region2 canonical(const std::vector<PolygonWithHoles>& parts, std::optional<Exact> area = {}) {
+  std::vector<Polygon2> polygons(parts.size());
+  for_each_index(parts.size(), true, [&](std::size_t k) {
+    polygons[k].outer = to_ring(parts[k].outer_boundary());
+    for (auto hole = parts[k].holes_begin(); hole != parts[k].holes_end(); ++hole)
+      polygons[k].holes.push_back(to_ring(*hole));
+  });
+  return canonical_region(std::move(polygons), std::move(area));
+}
+
+// returns the union of the rings from their groups' pieces.
+Region2 union_of(const std::vector<Ring2>& rings,
+                 const std::vector<std::vector<PolygonWithHoles>>& pieces) {
+  if (rings.size() == 1) return convex_region(rings.front());
+  std::vector<PolygonWithHoles> all;
+  for (const std::vector<PolygonWithHoles>& group : pieces)
+    all.insert(all.end(), group.begin(), group.end());
+  return canonical(all);
+}
+
+}  // namespace
+
+Region2 unite_groups(const std::vector<Ring2>& rings,
+                     const std::vector<std::vector<std::size_t>>& groups) {
+  return union_of(rings, group_pieces(rings, groups));
+}
+
+std::pair<Region2, Region2> unite_and_complement(
+    const std::vector<Ring2>& rings, const std::vector<std::vector<std::size_t>>& groups,
+    const Ring2& window) {
+  const std::vector<std::vector<PolygonWithHoles>> pieces = group_pieces(rings, groups);
 
   // The lit part: the window less the groups with a piece that touches its boundary (a
   // Boolean difference), whose faces and the other pieces' holes are the faces the other
@@ -234,22 +271,9 @@ std::pair<Region2, Region2> unite_and_complement(
     faces[static_cast<std::size_t>(home[p])].holes.push_back(std::move(hole));
   }
 
-  const auto canonical = [](const std::vector<PolygonWithHoles>& parts,
-                            std::optional<Exact> area = {}) {
-    std::vector<Polygon2> polygons(parts.size());
-    for_each_index(parts.size(), true, [&](std::size_t k) {
-      polygons[k].outer = to_ring(parts[k].outer_boundary());
-      for (auto hole = parts[k].holes_begin(); hole != parts[k].holes_end(); ++hole)
-        polygons[k].holes.push_back(to_ring(*hole));
-    });
-    return canonical_region(std::move(polygons), std::move(area));
-  };
   std::vector<PolygonWithHoles> lit;
   for (LitFace& face : faces) lit.emplace_back(face.outer, face.holes.begin(), face.holes.end());
-  std::vector<PolygonWithHoles> all;
-  for (const std::vector<PolygonWithHoles>& group : pieces)
-    all.insert(all.end(), group.begin(), group.end());
-  Region2 shadow = rings.size() == 1 ? convex_region(rings.front()) : canonical(all);
+  Region2 shadow = union_of(rings, pieces);
   // The lit part and the shadow tile the window: its area is the window's less theirs.
   const Exact lit_area = exact_number(exact_value(signed_area(window)) - exact_value(shadow.area));
   return {std::move(shadow), canonical(lit, lit_area)};

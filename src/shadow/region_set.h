@@ -33,6 +33,12 @@ Region2 unite_regions(const std::vector<Region2>& regions);
 // groups in the order of their first ring: rings in different groups are strictly apart.
 std::vector<std::vector<std::size_t>> touching_groups(const std::vector<Ring2>& rings);
 
+// returns unite_minus(rings) for convex counter-clockwise rings, given their
+// touching_groups: each group united on its own (across threads), as unite_and_complement
+// unites them, without the lit part.
+Region2 unite_groups(const std::vector<Ring2>& rings,
+                     const std::vector<std::vector<std::size_t>>& groups);
+
 // returns {unite_minus(rings), unite_minus({window}, rings)} for convex
 // counter-clockwise rings inside the convex window (the union of a single ring is that
 // ring's convex_region), given their touching_groups: each group is united on its own

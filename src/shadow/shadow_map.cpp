@@ -229,7 +229,7 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
   LightShadows result = shading.shade(candidates, [&](const Receiver& receiver,
                                                       const std::vector<std::size_t>& occluders) {
     const Face& face = shading.face(receiver);
-    if (occluders.empty()) return unite_shadows(face, {});
+    if (occluders.empty()) return unite_shadows(face, {}, options.lit_parts);
     // The face's ring and frame, exact and in intervals, once for all its occluders.
     const detail::ReceiverClip clip(face);
     // A face under many occluders (a ground slab under a city) clips them across
@@ -242,7 +242,7 @@ LightShadows shade_scene(const Scene& scene, const std::vector<Receiver>& receiv
     std::vector<OccluderShadow> shadows;
     for (std::size_t k = 0; k < occluders.size(); ++k)
       if (polygons[k]) shadows.push_back({occluders[k], std::move(*polygons[k])});
-    return unite_shadows(face, std::move(shadows));
+    return unite_shadows(face, std::move(shadows), options.lit_parts);
   });
   result.stats.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -88,6 +88,8 @@ SunHoursResult sun_hours(const Scene& scene, const SunPlacement& sun,
   ShadowOptions shadow_options;
   shadow_options.receivers = options.receivers;
   shadow_options.parallel = options.parallel;
+  // The overlay takes the shadows alone.
+  shadow_options.lit_parts = false;
   result.faces = compute_shadows(stepped, shadow_options);  // the receivers, no lights
   const std::size_t count = result.faces.receivers.size();
 

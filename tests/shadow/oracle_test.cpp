@@ -194,4 +194,42 @@ BOOST_AUTO_TEST_CASE(broad_phase_and_range_culling_drop_no_shadow) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(shadows_alone_are_the_full_runs_shadows) {
+  // ShadowOptions::lit_parts = false (sun-hours) unites each face's shadows by groups and
+  // skips the lit part: the shadows must be those of the full run, which the cases above
+  // check against the oracle. Faces under two or more occluders take the Boolean path.
+  std::mt19937 random(29);  // fixed: reproducible scenes
+  std::size_t united = 0;
+  std::vector<Scene> scenes;
+  for (const char* name : {"shadow-touching", "shadow-abutting", "shadow-collinear-contour",
+                           "shadow-shared-face", "shadow-sun-parallel"})
+    scenes.push_back(load_scene(fixture(std::string("scenes/") + name + ".json")));
+  while (scenes.size() < 45) {
+    try {
+      scenes.push_back(scene_from_text(random_scene(random)));
+    } catch (const std::exception&) {
+      continue;
+    }
+  }
+  for (const Scene& scene : scenes) {
+    ShadowOptions full;
+    full.range_fraction = 0;
+    ShadowOptions alone = full;
+    alone.lit_parts = false;
+    const ShadowResult reference = compute_shadows(scene, full);
+    const ShadowResult result = compute_shadows(scene, alone);
+    for (std::size_t l = 0; l < result.lights.size(); ++l)
+      for (std::size_t r = 0; r < result.receivers.size(); ++r) {
+        const FaceShadow& a = reference.lights[l].faces[r];
+        const FaceShadow& b = result.lights[l].faces[r];
+        BOOST_TEST((a.shadow == b.shadow));
+        BOOST_TEST(b.lit.empty());
+        BOOST_TEST(a.occluders.size() == b.occluders.size());
+        if (b.occluders.size() >= 2 && !a.lit.empty()) ++united;
+      }
+  }
+  BOOST_TEST_MESSAGE("shadows alone: " << united << " faces under two or more shadows");
+  BOOST_TEST(united >= 20u);
+}
+
 BOOST_AUTO_TEST_SUITE_END()

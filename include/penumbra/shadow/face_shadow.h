@@ -63,7 +63,8 @@ Region2 face_region(const Face& face);
 FaceShadow unlit_face(const Face& face);
 
 // unites the occluders' shadow polygons on face (Polygon_set_2, aggregated join)
-// and subtracts the union from the face. occluders must be sorted by occluder.
-FaceShadow unite_shadows(const Face& face, std::vector<OccluderShadow> occluders);
+// and subtracts the union from the face, unless lit is false (FaceShadow::lit is then left
+// empty). occluders must be sorted by occluder.
+FaceShadow unite_shadows(const Face& face, std::vector<OccluderShadow> occluders, bool lit = true);
 
 }  // namespace penumbra

@@ -44,6 +44,10 @@ struct ShadowOptions {
   // umbrae"); joint_occlusion then says whether it has joint parts. Faces of mesh parts,
   // whose pieces are united, keep the straight sets.
   bool joint_umbrae = false;
+  // false: FaceShadow::lit is left empty for point and directional sources, for callers
+  // that use the shadows alone (sun-hours overlays them): the lit part of a face under
+  // touching shadows costs a second Boolean operation.
+  bool lit_parts = true;
 };
 
 struct ShadowStats {
