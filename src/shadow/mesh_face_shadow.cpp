@@ -53,7 +53,7 @@ Region2 FrameMap::region(const Region2& region) const {
 }
 
 FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const FaceFrame*>>& pieces,
-                        const FaceFrame& frame, const std::optional<Region2>& whole) {
+                        const FaceFrame& frame, const std::optional<Region2>& whole, bool lit) {
   // A face of one piece in the piece's own frame (mesh_parts.cpp gives it that frame): its
   // shadow map is the piece's.
   const auto sort_unique = [](std::vector<std::size_t>& list) {
@@ -105,10 +105,11 @@ FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const Fac
     return unite_regions(regions);
   };
   const bool no_shadow = empty_everywhere(&FaceShadow::shadow);
-  const bool no_lit = empty_everywhere(&FaceShadow::lit);
-  result.shadow = no_shadow                     ? Region2{}
-                  : no_lit && computed && whole ? *whole
-                                                : united(&FaceShadow::shadow);
+  // Pieces computed without their lit parts (ShadowOptions::lit_parts) say nothing by them.
+  const bool no_lit = !lit || empty_everywhere(&FaceShadow::lit);
+  result.shadow = no_shadow                            ? Region2{}
+                  : lit && no_lit && computed && whole ? *whole
+                                                       : united(&FaceShadow::shadow);
   result.lit = no_lit                           ? Region2{}
                : no_shadow && computed && whole ? *whole
                                                 : united(&FaceShadow::lit);

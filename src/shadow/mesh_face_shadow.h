@@ -33,9 +33,11 @@ class FrameMap {
 // face's frame; frame is the face's. Flags are the pieces' (faces_away, beyond_range: all
 // of them; the others: any); occluders follow the pieces' order, each piece's in its own.
 // whole, when given, is the face's region: a set that every piece has whole (a face wholly
-// lit, or wholly in shadow) is then taken as it, without a Boolean union.
+// lit, or wholly in shadow) is then taken as it, without a Boolean union. lit false: the
+// pieces' lit parts were not computed (ShadowOptions::lit_parts); the result's stays empty.
 FaceShadow unite_pieces(const std::vector<std::pair<const FaceShadow*, const FaceFrame*>>& pieces,
-                        const FaceFrame& frame, const std::optional<Region2>& whole = {});
+                        const FaceFrame& frame, const std::optional<Region2>& whole = {},
+                        bool lit = true);
 
 // The exact umbra of the tube q1q2 (ends in lexicographic order) on a mesh face of several
 // pieces whose pieces have joint parts (exact_umbra.h, issue #17): computed on the whole face

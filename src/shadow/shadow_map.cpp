@@ -453,7 +453,8 @@ void unite_mesh_faces(const Scene& scene, const std::vector<std::size_t>& rank,
         pieces.push_back({&light.faces[r], &piece_faces.back()->frame});
         curved = curved || light.faces[r].curved;
       }
-      faces[k] = detail::unite_pieces(pieces, face.frame, whole_face(face, members[slot].size()));
+      faces[k] = detail::unite_pieces(pieces, face.frame, whole_face(face, members[slot].size()),
+                                      options.lit_parts);
       if (options.joint_umbrae && curved) {
         // joint parts on some piece: the exact umbra of the whole face (issue #17)
         const auto [q1, q2] = tube_ends(std::get<LinearLight>(scene.lights[light.light].source));

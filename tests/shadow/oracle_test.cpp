@@ -197,14 +197,24 @@ BOOST_AUTO_TEST_CASE(broad_phase_and_range_culling_drop_no_shadow) {
 BOOST_AUTO_TEST_CASE(shadows_alone_are_the_full_runs_shadows) {
   // ShadowOptions::lit_parts = false (sun-hours) unites each face's shadows by groups and
   // skips the lit part: the shadows must be those of the full run, which the cases above
-  // check against the oracle. Faces under two or more occluders take the Boolean path.
+  // check against the oracle. Faces under two or more occluders take the Boolean path; the
+  // mesh scenes' faces made of several pieces are united from their pieces' shadows alone.
   std::mt19937 random(29);  // fixed: reproducible scenes
   std::size_t united = 0;
   std::vector<Scene> scenes;
-  for (const char* name : {"shadow-touching", "shadow-abutting", "shadow-collinear-contour",
-                           "shadow-shared-face", "shadow-sun-parallel"})
+  for (const char* name :
+       {"shadow-touching", "shadow-abutting", "shadow-collinear-contour", "shadow-shared-face",
+        "shadow-sun-parallel", "mesh-canopy", "mesh-courtyard", "mesh-window", "mesh-through-hole",
+        "mesh-noisy", "mesh-staircase"})
     scenes.push_back(load_scene(fixture(std::string("scenes/") + name + ".json")));
-  while (scenes.size() < 45) {
+  // The L-shaped roof (one face of three pieces) partly in the shadow of a box above it.
+  scenes.push_back(scene_from_text(
+      "{\"penumbra\": 1, \"objects\": [{\"name\": \"house\", \"mesh\": \"" +
+      fixture("meshes/l-courtyard.obj").string() +
+      "\"}, {\"name\": \"box\", \"box\": {\"min\": [1, 1, 8], \"max\": [6, 3, 9]}}], "
+      "\"lights\": [{\"name\": \"sun\", \"directional\": [0.125, 0.25, -1], \"illuminance\": "
+      "1000}]}"));
+  while (scenes.size() < 52) {
     try {
       scenes.push_back(scene_from_text(random_scene(random)));
     } catch (const std::exception&) {
