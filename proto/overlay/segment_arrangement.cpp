@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -472,7 +473,7 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
       y_low = std::min(y_low, p.y.inf());
       y_high = std::max(y_high, p.y.sup());
     }
-    bands = std::max<std::size_t>(1, std::min<std::size_t>(1 << 16, edges / 16));
+    bands = std::max<std::size_t>(1, std::min<std::size_t>(1 << 12, edges / 16));
     in_band.assign(bands, {});
   }
   const auto band = [&](double y) {
@@ -503,7 +504,19 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     if (lowest.size() > 1)
       for (std::size_t k = band(approx[v].y.inf()); k <= band(approx[v].y.sup()); ++k)
         candidates.insert(candidates.end(), in_band[k].begin(), in_band[k].end());
+    const IntervalPoint& pi = approx[v];
+    double hit_low = -std::numeric_limits<double>::infinity();  // below the nearest x so far
     for (const std::size_t e : candidates) {
+      {
+        // Interval filters: an edge wholly above, below, right of p or left of the nearest
+        // so far is not the nearest.
+        const IntervalPoint &ai = approx[origin[2 * e]], &bi = approx[origin[2 * e + 1]];
+        if (std::max(ai.y.sup(), bi.y.sup()) < pi.y.inf() ||
+            std::min(ai.y.inf(), bi.y.inf()) > pi.y.sup() ||
+            std::min(ai.x.inf(), bi.x.inf()) > pi.x.sup() ||
+            std::max(ai.x.sup(), bi.x.sup()) < hit_low)
+          continue;
+      }
       if (component.root(origin[2 * e]) == root) continue;
       std::size_t lo = origin[2 * e], hi = origin[2 * e + 1];
       int c = cmp(points[lo].y(), points[hi].y());
@@ -525,6 +538,7 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
       if (nearer) {
         hit = e;
         hit_x = x;
+        hit_low = CGAL::to_interval(x).first;
       }
     }
     if (std::getenv("ARR_DEBUG")) {
@@ -547,6 +561,7 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     faces.join(cycle[outer], cycle[down]);
   }
 
+  if (timing) std::fprintf(stderr, "  %zu components\n", lowest.size());
   lap("containment");
   // Face numbers (the unbounded face 0) and counts spread from it across the edges.
   std::vector<std::size_t> number(cycles + 1, SIZE_MAX);
