@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include <CGAL/Polygon_2_algorithms.h>
+#include <tbb/parallel_sort.h>
 
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
@@ -49,7 +50,7 @@ std::vector<std::size_t> first_equal(const std::vector<RationalPoint2>& points) 
                  [&](std::size_t k) { hashes[k] = hash_of(points[k]); }, 256);
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+  tbb::parallel_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return hashes[a] != hashes[b] ? hashes[a] < hashes[b] : a < b;
   });
   std::vector<std::size_t> first(points.size());
@@ -346,15 +347,17 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   lap("pairs");
   // Crossings numbered with the corners by their exact values.
   const std::size_t corners = points.size();
-  std::vector<std::size_t> crossing_vertex(pairs.size(), 0);
+  std::vector<std::size_t> crossing_vertex(pairs.size(), SIZE_MAX);
   {
     std::vector<RationalPoint2> all(points);
     std::vector<std::size_t> pair_of;
     for (std::size_t k = 0; k < pairs.size(); ++k)
       if (crossing_of[k]) {
         pair_of.push_back(k);
-        all.push_back(*crossing_of[k]);
+        all.push_back(std::move(*crossing_of[k]));
       }
+    crossing_of.clear();
+    crossing_of.shrink_to_fit();
     const std::vector<std::size_t> same = first_equal(all);
     std::vector<std::size_t> id(all.size());
     for (std::size_t k = 0; k < all.size(); ++k) {
@@ -362,7 +365,7 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
         id[k] = k;  // corners are distinct already
       } else if (same[k] == k) {
         id[k] = points.size();
-        points.push_back(all[k]);
+        points.push_back(std::move(all[k]));
       } else {
         id[k] = id[same[k]];
       }
@@ -379,7 +382,7 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   for (std::size_t k = 0; k < n; ++k) on_segment[k] = {segs[k].a, segs[k].b};
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     for (const Split& split : splits_of[k]) on_segment[split.segment].push_back(split.vertex);
-    if (crossing_of[k]) {
+    if (crossing_vertex[k] != SIZE_MAX) {
       on_segment[pairs[k].first].push_back(crossing_vertex[k]);
       on_segment[pairs[k].second].push_back(crossing_vertex[k]);
     }
@@ -394,22 +397,32 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
         list.erase(std::unique(list.begin(), list.end()), list.end());
       },
       64);
-  std::unordered_map<std::uint64_t, std::size_t> edge_of;  // (u, v) -> edge
+  // Every piece (u, v, segment) sorted by (u, v) across threads: equal pieces are one edge.
+  std::vector<std::size_t> start(n + 1, 0);
+  for (std::size_t k = 0; k < n; ++k) start[k + 1] = start[k] + on_segment[k].size() - 1;
+  struct Piece {
+    std::uint64_t key;
+    std::size_t segment;
+  };
+  std::vector<Piece> pieces(start[n]);
+  for_each_index(n, n > 1024, [&](std::size_t k) {
+    const std::vector<std::size_t>& list = on_segment[k];
+    for (std::size_t i = 0; i + 1 < list.size(); ++i)
+      pieces[start[k] + i] = {(static_cast<std::uint64_t>(list[i]) << 32) | list[i + 1], k};
+  }, 64);
+  tbb::parallel_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
+    return a.key != b.key ? a.key < b.key : a.segment < b.segment;
+  });
   std::vector<std::size_t> edge_line;
   std::vector<std::size_t>& origin = result.origin;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::vector<std::size_t>& list = on_segment[k];
-    for (std::size_t i = 0; i + 1 < list.size(); ++i) {
-      const std::uint64_t key = (static_cast<std::uint64_t>(list[i]) << 32) | list[i + 1];
-      auto [it, added] = edge_of.emplace(key, edge_line.size());
-      if (added) {
-        edge_line.push_back(segs[k].line);
-        result.left.push_back(0);
-        origin.push_back(list[i]);
-        origin.push_back(list[i + 1]);
-      }
-      result.left[it->second] += segs[k].left;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (i == 0 || pieces[i].key != pieces[i - 1].key) {
+      edge_line.push_back(segs[pieces[i].segment].line);
+      result.left.push_back(0);
+      origin.push_back(static_cast<std::size_t>(pieces[i].key >> 32));
+      origin.push_back(static_cast<std::size_t>(pieces[i].key & 0xFFFFFFFFu));
     }
+    result.left.back() += segs[pieces[i].segment].left;
   }
   const std::size_t edges = edge_line.size();
 
