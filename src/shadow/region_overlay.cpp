@@ -16,6 +16,7 @@
 
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
+#include "segment_arrangement.h"
 
 namespace penumbra {
 namespace {
@@ -150,137 +151,30 @@ struct Layer {
   long weight = 1;
 };
 
-// An overlay: the arrangement, and its vertices' points with their exact values.
-struct Overlay {
-  std::unique_ptr<Arrangement> arrangement;
-  std::vector<Point2> points;  // by vertex id
-};
-
-// returns the overlay of layers made in one sweep (CGAL::insert finds every meeting of
-// edges, touching included: canonical rings may touch themselves with a vertex on an edge,
-// which insertion as non-crossing curves does not allow), each face counting the weights of
-// the layers that hold it. Counts spread from the unbounded face (0): crossing an edge
-// from a face into its neighbour subtracts the weight of each layer the edge bounds on the
-// face's side and adds that of each it bounds on the neighbour's.
-Overlay overlay(const std::vector<Layer>& layers) {
-  // The rings' segments, each carrying its index, and the marks of their layers: +k when
-  // layer k - 1 lies on the left of the segment directed from its lexicographically smaller
-  // end to its larger one, -k when on its right.
-  std::vector<Traits::Curve_2> segments;
-  std::vector<long> marks;
-  for (std::size_t k = 0; k < layers.size(); ++k) {
-    const long mark = static_cast<long>(k) + 1;
+// returns the overlay of layers: the pairwise arrangement of their rings' segments
+// (segment_arrangement.h), each face counting the weights of the layers that hold it.
+proto::SegmentArrangement overlay(const std::vector<Layer>& layers) {
+  std::vector<proto::LayerSegment> segments;
+  for (const Layer& layer : layers) {
     const auto add = [&](const Ring2& ring) {
-      for (std::size_t i = 0; i < ring.size(); ++i) {
-        const Point2& p = ring[i];
-        const Point2& q = ring[(i + 1) % ring.size()];
-        segments.emplace_back(SegmentTraits::Curve_2(p, q), segments.size());
-        marks.push_back(CGAL::compare_xy(p, q) == CGAL::SMALLER ? mark : -mark);
-      }
+      for (std::size_t i = 0; i < ring.size(); ++i)
+        segments.push_back({ring[i], ring[(i + 1) % ring.size()], layer.weight});
     };
-    for (const Polygon2* polygon : layers[k].polygons) {
+    for (const Polygon2* polygon : layer.polygons) {
       add(polygon->outer);
       for (const Ring2& hole : polygon->holes) add(hole);
     }
   }
-  auto arrangement = std::make_unique<Arrangement>();
-  CGAL::insert(*arrangement, segments.begin(), segments.end());
-  std::size_t id = 0;
-  for (auto v = arrangement->vertices_begin(); v != arrangement->vertices_end(); ++v)
-    v->set_data(id++);
-  id = 0;
-  for (auto f = arrangement->faces_begin(); f != arrangement->faces_end(); ++f) f->data().id = id++;
-  id = 0;
-  for (auto h = arrangement->halfedges_begin(); h != arrangement->halfedges_end(); ++h)
-    h->set_data(id++);
-  using Face = Arrangement::Face_handle;
-  std::vector<bool> reached(arrangement->number_of_faces());
-  reached[arrangement->unbounded_face()->data().id] = true;
-  std::vector<Face> queue{arrangement->unbounded_face()};
-  while (!queue.empty()) {
-    const Face face = queue.back();
-    queue.pop_back();
-    const auto cross = [&](Arrangement::Ccb_halfedge_circulator ccb) {
-      auto halfedge = ccb;
-      do {
-        const Face other = halfedge->twin()->face();
-        if (reached[other->data().id]) continue;
-        reached[other->data().id] = true;
-        // face is on the halfedge's left: directed left to right, a mark k > 0 puts layer
-        // k - 1 on face's side.
-        const bool rightward = halfedge->direction() == CGAL::ARR_LEFT_TO_RIGHT;
-        long count = face->data().count;
-        for (const std::size_t segment : halfedge->curve().data()) {
-          const long mark = marks[segment];
-          const long weight = layers[static_cast<std::size_t>(std::labs(mark)) - 1].weight;
-          count += (mark > 0) == rightward ? -weight : weight;
-        }
-        other->data().count = count;
-        queue.push_back(other);
-      } while (++halfedge != ccb);
-    };
-    if (!face->is_unbounded()) cross(face->outer_ccb());
-    for (auto hole = face->inner_ccbs_begin(); hole != face->inner_ccbs_end(); ++hole) cross(*hole);
-  }
-  std::vector<Point2> points = exact_vertices(*arrangement, segments);
-  return {std::move(arrangement), std::move(points)};
+  return proto::arrange(segments);
 }
 
-// returns the polygons of the arrangement's faces by key (faces of key < 0 left out), read in
-// one pass: faces of one key that share an edge form one polygon (union-find); the boundary
-// of each key's set (its halfedges with that key on the left and another on the right) is
-// traced into rings, turning at each vertex into the next boundary halfedge of the same key
-// around it, so that sets touching at a vertex give separate rings. Counter-clockwise rings
-// are the polygons' outer boundaries, clockwise ones their holes, each in the polygon of the
-// face on its left.
 template <typename Key>
-std::map<std::ptrdiff_t, std::vector<Polygon2>> polygons_by_key(const Overlay& overlay,
-                                                                const Key& key_of) {
-  const Arrangement& arrangement = *overlay.arrangement;
-  using Face = Arrangement::Face_const_handle;
-  using Halfedge = Arrangement::Halfedge_const_handle;
-  std::vector<std::ptrdiff_t> keys(arrangement.number_of_faces());  // by face id
-  for (auto f = arrangement.faces_begin(); f != arrangement.faces_end(); ++f)
-    keys[f->data().id] = key_of(f->data().count);
-  const auto key = [&](Face f) { return keys[f->data().id]; };
-  std::vector<std::size_t> parent(keys.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](std::size_t k) {
-    while (parent[k] != k) k = parent[k] = parent[parent[k]];
-    return k;
-  };
-  for (auto e = arrangement.edges_begin(); e != arrangement.edges_end(); ++e) {
-    const Face a = e->face(), b = e->twin()->face();
-    if (a != b && key(a) >= 0 && key(a) == key(b)) parent[root(a->data().id)] = root(b->data().id);
-  }
-  const auto boundary = [&](Halfedge h) {
-    return key(h->face()) >= 0 && key(h->face()) != key(h->twin()->face());
-  };
-  std::vector<Polygon2> polygons(keys.size());  // by the root of their faces
-  std::vector<bool> traced(arrangement.number_of_halfedges());
-  for (auto h = arrangement.halfedges_begin(); h != arrangement.halfedges_end(); ++h) {
-    if (!boundary(h) || traced[h->data()]) continue;
-    Ring2 ring;
-    Halfedge at = h;
-    do {
-      traced[at->data()] = true;
-      ring.push_back(overlay.points[at->source()->data()]);
-      Halfedge next = at->next();
-      while (!boundary(next)) next = next->twin()->next();
-      at = next;
-    } while (at != Halfedge(h));
-    Ring2 canonical = canonical_ring(ring);
-    if (canonical.empty()) continue;
-    Polygon2& polygon = polygons[root(h->face()->data().id)];
-    if (CGAL::orientation_2(canonical.begin(), canonical.end(), Kernel()) == CGAL::COUNTERCLOCKWISE)
-      polygon.outer = std::move(canonical);
-    else
-      polygon.holes.push_back(std::move(canonical));
-  }
+std::map<std::ptrdiff_t, std::vector<Polygon2>> polygons_by_key(
+    const proto::SegmentArrangement& overlay, const Key& key_of) {
   std::map<std::ptrdiff_t, std::vector<Polygon2>> by_key;
-  for (std::size_t component = 0; component < polygons.size(); ++component)
-    if (!polygons[component].outer.empty())
-      by_key[keys[component]].push_back(std::move(polygons[component]));
+  for (auto& [key, polygons] :
+       proto::polygons_by_count(overlay, [&](long count) { return static_cast<long>(key_of(count)); }))
+    by_key[key] = std::move(polygons);
   return by_key;
 }
 
@@ -302,7 +196,7 @@ ClusterParts overlay_cluster(const std::vector<Piece>& cluster) {
   for (const Piece& piece : cluster) by_region[piece.region].polygons.push_back(piece.polygon);
   std::vector<Layer> layers;
   for (auto& entry : by_region) layers.push_back(std::move(entry.second));
-  const Overlay all = overlay(layers);
+  const proto::SegmentArrangement all = overlay(layers);
   for (auto& [count, polygons] : polygons_by_key(
            all, [](long data) { return data > 0 ? static_cast<std::ptrdiff_t>(data) : -1; }))
     parts.by_count[static_cast<std::size_t>(count)] = std::move(polygons);
@@ -312,7 +206,7 @@ ClusterParts overlay_cluster(const std::vector<Piece>& cluster) {
 
 // returns the polygons of the faces of the overlay of layers whose count is count.
 Region2 region_counting(const std::vector<Layer>& layers, long count) {
-  const Overlay all = overlay(layers);
+  const proto::SegmentArrangement all = overlay(layers);
   return canonical_region(
       std::move(polygons_by_key(all, [count](long data) { return data == count ? 0 : -1; })[0]));
 }

@@ -1,0 +1,654 @@
+#include "segment_arrangement.h"
+
+#include <CGAL/box_intersection_d.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <unordered_map>
+
+#include <CGAL/Polygon_2_algorithms.h>
+#include <tbb/parallel_sort.h>
+
+#include "penumbra/base/parallel.h"
+#include "penumbra/geometry/exact.h"
+
+namespace penumbra::proto {
+namespace {
+
+// ---- exact values by hash --------------------------------------------------------------
+
+std::size_t mix(std::size_t h, std::size_t x) {
+  return (h ^ x) * 0x100000001B3ull + 0x9E3779B97F4A7C15ull;
+}
+
+std::size_t hash_of(const mpz_class& z, std::size_t h) {
+  const mpz_srcptr p = z.get_mpz_t();
+  h = mix(h, static_cast<std::size_t>(mpz_sgn(p) + 1));
+  for (std::size_t i = 0, n = mpz_size(p); i < n; ++i) h = mix(h, mpz_getlimbn(p, i));
+  return h;
+}
+
+std::size_t hash_of(const RationalPoint2& p) {
+  std::size_t h = 1469598103934665603ull;
+  h = hash_of(p.x().get_num(), h);
+  h = hash_of(p.x().get_den(), h);
+  h = hash_of(p.y().get_num(), h);
+  return hash_of(p.y().get_den(), h);
+}
+
+// returns for each point the index of the first point equal to it (exactly), and the
+// distinct points' indices in order of first appearance.
+std::vector<std::size_t> first_equal(const std::vector<RationalPoint2>& points) {
+  std::vector<std::size_t> hashes(points.size());
+  for_each_index(points.size(), points.size() > 4096,
+                 [&](std::size_t k) { hashes[k] = hash_of(points[k]); }, 256);
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), 0);
+  tbb::parallel_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return hashes[a] != hashes[b] ? hashes[a] < hashes[b] : a < b;
+  });
+  std::vector<std::size_t> first(points.size());
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i;
+    while (j < order.size() && hashes[order[j]] == hashes[order[i]]) ++j;
+    for (std::size_t k = i; k < j; ++k) {
+      first[order[k]] = order[k];
+      for (std::size_t m = i; m < k; ++m)
+        if (first[order[m]] == order[m] && points[order[m]] == points[order[k]]) {
+          first[order[k]] = order[m];
+          break;
+        }
+    }
+    i = j;
+  }
+  return first;
+}
+
+// ---- lines --------------------------------------------------------------------------------
+
+// a x + b y + c = 0 in integers, divided by their gcd, (a, b) > 0 lexicographically: one
+// line, one triple.
+struct Line {
+  mpz_class a, b, c;
+  bool operator==(const Line& o) const { return a == o.a && b == o.b && c == o.c; }
+};
+
+Line line_through(const RationalPoint2& p, const RationalPoint2& q) {
+  const Rational a = p.y() - q.y(), b = q.x() - p.x(), c = p.x() * q.y() - p.y() * q.x();
+  mpz_class l;
+  mpz_lcm(l.get_mpz_t(), a.get_den_mpz_t(), b.get_den_mpz_t());
+  mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
+  Line line{a.get_num() * (l / a.get_den()), b.get_num() * (l / b.get_den()),
+            c.get_num() * (l / c.get_den())};
+  mpz_class g;
+  mpz_gcd(g.get_mpz_t(), line.a.get_mpz_t(), line.b.get_mpz_t());
+  mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), line.c.get_mpz_t());
+  if (g > 1) {
+    mpz_divexact(line.a.get_mpz_t(), line.a.get_mpz_t(), g.get_mpz_t());
+    mpz_divexact(line.b.get_mpz_t(), line.b.get_mpz_t(), g.get_mpz_t());
+    mpz_divexact(line.c.get_mpz_t(), line.c.get_mpz_t(), g.get_mpz_t());
+  }
+  if (sgn(line.a) < 0 || (sgn(line.a) == 0 && sgn(line.b) < 0)) {
+    line.a = -line.a;
+    line.b = -line.b;
+    line.c = -line.c;
+  }
+  return line;
+}
+
+std::size_t hash_of(const Line& line) {
+  return hash_of(line.c, hash_of(line.b, hash_of(line.a, 7)));
+}
+
+using Interval = CGAL::Interval_nt<false>;
+struct IntervalPoint {
+  Interval x, y;
+};
+struct IntervalLine {
+  Interval a, b, c;
+};
+
+IntervalPoint interval_of(const RationalPoint2& p) {
+  return {Interval(CGAL::to_interval(p.x())), Interval(CGAL::to_interval(p.y()))};
+}
+IntervalLine interval_of(const Line& l) {
+  return {Interval(CGAL::to_interval(l.a)), Interval(CGAL::to_interval(l.b)),
+          Interval(CGAL::to_interval(l.c))};
+}
+
+// returns the sign of a x + b y + c at p.
+int side(const Line& line, const RationalPoint2& p);
+
+// the same, decided in intervals where they can.
+int side(const Line& line, const IntervalLine& li, const RationalPoint2& p,
+         const IntervalPoint& pi) {
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(li.a * pi.x + li.b * pi.y + li.c);
+    if (CGAL::is_certain(sign)) return static_cast<int>(sign.make_certain());
+  }
+  return side(line, p);
+}
+
+int side(const Line& line, const RationalPoint2& p) {
+  // x = xn / xd, y = yn / yd, xd, yd > 0: the sign of a xn yd + b yn xd + c xd yd.
+  const mpz_class& xn = p.x().get_num();
+  const mpz_class& xd = p.x().get_den();
+  const mpz_class& yn = p.y().get_num();
+  const mpz_class& yd = p.y().get_den();
+  const mpz_class value = line.a * xn * yd + line.b * yn * xd + line.c * xd * yd;
+  return sgn(value);
+}
+
+// returns -1, 0, 1 as p <, ==, > q lexicographically.
+int compare_xy(const RationalPoint2& p, const RationalPoint2& q);
+
+// the same, decided in intervals where they can.
+int compare_xy(const RationalPoint2& p, const IntervalPoint& pi, const RationalPoint2& q,
+               const IntervalPoint& qi) {
+  if (pi.x.sup() < qi.x.inf()) return -1;
+  if (pi.x.inf() > qi.x.sup()) return 1;
+  if (pi.x.is_point() && qi.x.is_point() && pi.x.inf() == qi.x.inf()) {
+    if (pi.y.sup() < qi.y.inf()) return -1;
+    if (pi.y.inf() > qi.y.sup()) return 1;
+  }
+  return compare_xy(p, q);
+}
+
+int compare_xy(const RationalPoint2& p, const RationalPoint2& q) {
+  if (const int x = cmp(p.x(), q.x())) return x < 0 ? -1 : 1;
+  const int y = cmp(p.y(), q.y());
+  return y < 0 ? -1 : (y > 0 ? 1 : 0);
+}
+
+// The direction of a halfedge: sign * (b, -a) of its line.
+struct Direction {
+  const Line* line;
+  int sign;
+  int dx() const { return sign * sgn(line->b); }
+  int dy() const { return -sign * sgn(line->a); }
+};
+
+// returns the sign of the cross product u x v.
+int cross_sign(const Direction& u, const Direction& v) {
+  // (s b1, -s a1) x (t b2, -t a2) = s t (a1 b2 - a2 b1)
+  const mpz_class value = u.line->a * v.line->b - v.line->a * u.line->b;
+  return u.sign * v.sign * sgn(value);
+}
+
+// returns true when u comes before v counter-clockwise from the direction (1, 0) included.
+bool before(const Direction& u, const Direction& v) {
+  const auto half = [](const Direction& d) {
+    return (d.dy() > 0 || (d.dy() == 0 && d.dx() > 0)) ? 0 : 1;
+  };
+  if (half(u) != half(v)) return half(u) < half(v);
+  return cross_sign(u, v) > 0;
+}
+
+// ---- union-find ---------------------------------------------------------------------
+
+struct Sets {
+  std::vector<std::size_t> parent;
+  explicit Sets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::size_t root(std::size_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  }
+  void join(std::size_t a, std::size_t b) { parent[root(a)] = root(b); }
+};
+
+}  // namespace
+
+SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
+  SegmentArrangement result;
+  const std::size_t n = input.size();
+  auto last = std::chrono::steady_clock::now();
+  const bool timing = std::getenv("ARR_TIMES") != nullptr;
+  const auto lap = [&](const char* name) {
+    const auto now = std::chrono::steady_clock::now();
+    if (timing) std::fprintf(stderr, "  %s %.2f s\n", name, std::chrono::duration<double>(now - last).count());
+    last = now;
+  };
+
+  // Corners numbered by their exact values; each segment from its smaller corner to its larger.
+  std::vector<RationalPoint2> raw;
+  raw.reserve(2 * n);
+  for (const LayerSegment& s : input) {
+    raw.push_back(exact_value(s.a));
+    raw.push_back(exact_value(s.b));
+  }
+  std::vector<std::size_t> first = first_equal(raw);
+  std::vector<std::size_t> vertex_of(raw.size());
+  std::vector<RationalPoint2>& points = result.points;
+  for (std::size_t k = 0; k < raw.size(); ++k) {
+    if (first[k] == k) {
+      vertex_of[k] = points.size();
+      points.push_back(raw[k]);
+    } else {
+      vertex_of[k] = vertex_of[first[k]];
+    }
+  }
+  struct Seg {
+    std::size_t a, b;  // vertices, a < b lexicographically
+    long left;         // added on the left of a -> b
+    std::size_t line;
+  };
+  std::vector<Seg> segs(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t a = vertex_of[2 * k], b = vertex_of[2 * k + 1];
+    long left = input[k].left;
+    if (compare_xy(points[a], points[b]) > 0) {
+      std::swap(a, b);
+      left = -left;
+    }
+    segs[k] = {a, b, left, 0};
+  }
+  lap("corners");
+  // Lines numbered by their exact triples.
+  std::vector<Line> lines;
+  {
+    std::vector<Line> of(n);
+    for_each_index(n, n > 1024,
+                   [&](std::size_t k) { of[k] = line_through(points[segs[k].a], points[segs[k].b]); },
+                   64);
+    std::unordered_multimap<std::size_t, std::size_t> by_hash;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t h = hash_of(of[k]);
+      std::optional<std::size_t> found;
+      for (auto [it, end] = by_hash.equal_range(h); it != end; ++it)
+        if (lines[it->second] == of[k]) found = it->second;
+      if (!found) {
+        found = lines.size();
+        lines.push_back(of[k]);
+        by_hash.emplace(h, *found);
+      }
+      segs[k].line = *found;
+    }
+  }
+
+  lap("lines");
+  // Intervals of the corners and of the lines, for the filters.
+  std::vector<IntervalPoint> approx(points.size());
+  for_each_index(points.size(), points.size() > 4096,
+                 [&](std::size_t v) { approx[v] = interval_of(points[v]); }, 256);
+  std::vector<IntervalLine> line_approx(lines.size());
+  for (std::size_t l = 0; l < lines.size(); ++l) line_approx[l] = interval_of(lines[l]);
+  const auto less = [&](std::size_t u, std::size_t v) {
+    return compare_xy(points[u], approx[u], points[v], approx[v]) < 0;
+  };
+
+  // Pairs of segments whose boxes meet, each classified exactly.
+  using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t,
+                                                          CGAL::Box_intersection_d::ID_EXPLICIT>;
+  std::vector<Box> boxes;
+  for (std::size_t k = 0; k < n; ++k)
+    boxes.emplace_back(input[k].a.bbox() + input[k].b.bbox(), k);
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& p, const Box& q) {
+    pairs.emplace_back(p.handle(), q.handle());
+  });
+  // What a pair gives: a corner of one inside the other (by vertex) or a crossing (a new point).
+  struct Split {
+    std::size_t segment;
+    std::size_t vertex;  // a vertex, or raw crossing index + points.size() before crossings
+  };
+  std::vector<std::vector<Split>> splits_of(pairs.size());
+  std::vector<std::optional<RationalPoint2>> crossing_of(pairs.size());
+  const auto inside = [&](std::size_t v, const Seg& s) {  // v on s's line: strictly inside s?
+    return v != s.a && v != s.b && less(s.a, v) && less(v, s.b);
+  };
+  for_each_index(
+      pairs.size(), pairs.size() > 1024,
+      [&](std::size_t k) {
+        const std::size_t i = pairs[k].first, j = pairs[k].second;
+        const Seg &s = segs[i], &t = segs[j];
+        std::vector<Split>& out = splits_of[k];
+        if (s.line == t.line) {  // collinear: the corners of each strictly inside the other
+          for (std::size_t v : {t.a, t.b})
+            if (inside(v, s)) out.push_back({i, v});
+          for (std::size_t v : {s.a, s.b})
+            if (inside(v, t)) out.push_back({j, v});
+          return;
+        }
+        const auto on = [&](std::size_t v, const Seg& r) {
+          return (v == r.a || v == r.b)
+                     ? 0
+                     : side(lines[r.line], line_approx[r.line], points[v], approx[v]);
+        };
+        const int o1 = on(t.a, s), o2 = on(t.b, s);
+        if (o1 == o2 && o1 != 0) return;
+        const int o3 = on(s.a, t), o4 = on(s.b, t);
+        if (o3 == o4 && o3 != 0) return;
+        if (o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0) {
+          // A proper crossing: Cramer's rule on the two integer lines.
+          const Line &l = lines[s.line], &m = lines[t.line];
+          const mpz_class d = l.a * m.b - m.a * l.b;
+          Rational x(l.b * m.c - m.b * l.c, d), y(m.a * l.c - l.a * m.c, d);
+          x.canonicalize();
+          y.canonicalize();
+          crossing_of[k] = RationalPoint2(x, y);
+          return;
+        }
+        // Lines apart: the one common point of the lines, if it is a corner of one lying
+        // inside the other.
+        if (o1 == 0 && inside(t.a, s)) out.push_back({i, t.a});
+        if (o2 == 0 && inside(t.b, s)) out.push_back({i, t.b});
+        if (o3 == 0 && inside(s.a, t)) out.push_back({j, s.a});
+        if (o4 == 0 && inside(s.b, t)) out.push_back({j, s.b});
+      },
+      256);
+
+  lap("pairs");
+  // Crossings numbered with the corners by their exact values.
+  const std::size_t corners = points.size();
+  std::vector<std::size_t> crossing_vertex(pairs.size(), SIZE_MAX);
+  {
+    std::vector<RationalPoint2> all(points);
+    std::vector<std::size_t> pair_of;
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+      if (crossing_of[k]) {
+        pair_of.push_back(k);
+        all.push_back(std::move(*crossing_of[k]));
+      }
+    crossing_of.clear();
+    crossing_of.shrink_to_fit();
+    const std::vector<std::size_t> same = first_equal(all);
+    std::vector<std::size_t> id(all.size());
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      if (k < corners) {
+        id[k] = k;  // corners are distinct already
+      } else if (same[k] == k) {
+        id[k] = points.size();
+        points.push_back(std::move(all[k]));
+      } else {
+        id[k] = id[same[k]];
+      }
+      if (k >= corners) crossing_vertex[pair_of[k - corners]] = id[k];
+    }
+  }
+
+  lap("crossing ids");
+  approx.resize(points.size());
+  for_each_index(points.size() - corners, points.size() - corners > 4096,
+                 [&](std::size_t k) { approx[corners + k] = interval_of(points[corners + k]); }, 256);
+  // Each segment's vertices in order, consecutive ones the edges.
+  std::vector<std::vector<std::size_t>> on_segment(n);
+  for (std::size_t k = 0; k < n; ++k) on_segment[k] = {segs[k].a, segs[k].b};
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    for (const Split& split : splits_of[k]) on_segment[split.segment].push_back(split.vertex);
+    if (crossing_vertex[k] != SIZE_MAX) {
+      on_segment[pairs[k].first].push_back(crossing_vertex[k]);
+      on_segment[pairs[k].second].push_back(crossing_vertex[k]);
+    }
+  }
+  for_each_index(
+      n, n > 1024,
+      [&](std::size_t k) {
+        std::vector<std::size_t>& list = on_segment[k];
+        std::sort(list.begin(), list.end(), [&](std::size_t u, std::size_t v) {
+          return u != v && less(u, v);
+        });
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+      },
+      64);
+  // Every piece (u, v, segment) sorted by (u, v) across threads: equal pieces are one edge.
+  std::vector<std::size_t> start(n + 1, 0);
+  for (std::size_t k = 0; k < n; ++k) start[k + 1] = start[k] + on_segment[k].size() - 1;
+  struct Piece {
+    std::uint64_t key;
+    std::size_t segment;
+  };
+  std::vector<Piece> pieces(start[n]);
+  for_each_index(n, n > 1024, [&](std::size_t k) {
+    const std::vector<std::size_t>& list = on_segment[k];
+    for (std::size_t i = 0; i + 1 < list.size(); ++i)
+      pieces[start[k] + i] = {(static_cast<std::uint64_t>(list[i]) << 32) | list[i + 1], k};
+  }, 64);
+  tbb::parallel_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
+    return a.key != b.key ? a.key < b.key : a.segment < b.segment;
+  });
+  std::vector<std::size_t> edge_line;
+  std::vector<std::size_t>& origin = result.origin;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (i == 0 || pieces[i].key != pieces[i - 1].key) {
+      edge_line.push_back(segs[pieces[i].segment].line);
+      result.left.push_back(0);
+      origin.push_back(static_cast<std::size_t>(pieces[i].key >> 32));
+      origin.push_back(static_cast<std::size_t>(pieces[i].key & 0xFFFFFFFFu));
+    }
+    result.left.back() += segs[pieces[i].segment].left;
+  }
+  const std::size_t edges = edge_line.size();
+
+  lap("edges");
+  // Around each vertex, its outgoing halfedges counter-clockwise; next[h] for the halfedge
+  // h entering a vertex is the outgoing one clockwise after its twin.
+  const auto direction = [&](std::size_t h) {
+    const Line& line = lines[edge_line[h / 2]];
+    // 2e goes from the smaller vertex to the larger: rightward (dx > 0, or dx = 0 and dy > 0).
+    const int dx = sgn(line.b), dy = -sgn(line.a);
+    const int rightward = (dx > 0 || (dx == 0 && dy > 0)) ? 1 : -1;
+    return Direction{&line, (h % 2 == 0) ? rightward : -rightward};
+  };
+  std::vector<std::vector<std::size_t>> around(points.size());
+  for (std::size_t h = 0; h < 2 * edges; ++h) around[origin[h]].push_back(h);
+  result.next.assign(2 * edges, 0);
+  for_each_index(
+      points.size(), points.size() > 1024,
+      [&](std::size_t v) {
+        std::vector<std::size_t>& list = around[v];
+        std::sort(list.begin(), list.end(), [&](std::size_t g, std::size_t h) {
+          return g != h && before(direction(g), direction(h));
+        });
+        const std::size_t m = list.size();
+        for (std::size_t i = 0; i < m; ++i) result.next[list[i] ^ 1] = list[(i + m - 1) % m];
+      },
+      64);
+
+  lap("around");
+  // Cycles of next; components of the edges; each component's outer cycle leaves its
+  // lexicographically smallest vertex along its most counter-clockwise edge.
+  std::vector<std::size_t> cycle(2 * edges, SIZE_MAX);
+  std::size_t cycles = 0;
+  for (std::size_t h = 0; h < 2 * edges; ++h) {
+    if (cycle[h] != SIZE_MAX) continue;
+    for (std::size_t at = h; cycle[at] == SIZE_MAX; at = result.next[at]) cycle[at] = cycles;
+    ++cycles;
+  }
+  Sets component(points.size());
+  for (std::size_t e = 0; e < edges; ++e) component.join(origin[2 * e], origin[2 * e + 1]);
+  std::map<std::size_t, std::size_t> lowest;  // component root -> its smallest vertex
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    if (around[v].empty()) continue;
+    auto [it, added] = lowest.emplace(component.root(v), v);
+    if (!added && less(v, it->second)) it->second = v;
+  }
+
+  lap("cycles");
+  // Faces: the cycles, each component's outer cycle joined to the face that holds it (found
+  // by a ray from its smallest vertex to the left), and the unbounded face (index cycles).
+  Sets faces(cycles + 1);
+  // Edges by horizontal bands of their vertical extents (intervals rounded outward), for the
+  // rays; only needed when there are components to locate beside the first.
+  double y_low = 0, y_high = 0;
+  std::size_t bands = 1;
+  std::vector<std::vector<std::size_t>> in_band(1);
+  if (lowest.size() > 1 && edges > 0) {
+    y_low = approx[0].y.inf();
+    y_high = approx[0].y.sup();
+    for (const IntervalPoint& p : approx) {
+      y_low = std::min(y_low, p.y.inf());
+      y_high = std::max(y_high, p.y.sup());
+    }
+    bands = std::max<std::size_t>(1, std::min<std::size_t>(1 << 12, edges / 16));
+    in_band.assign(bands, {});
+  }
+  const auto band = [&](double y) {
+    if (!(y_high > y_low)) return std::size_t(0);
+    const double t = (y - y_low) / (y_high - y_low) * static_cast<double>(bands);
+    return std::min(bands - 1, static_cast<std::size_t>(std::max(0.0, t)));
+  };
+  if (lowest.size() > 1)
+    for (std::size_t e = 0; e < edges; ++e) {
+      const IntervalPoint &a = approx[origin[2 * e]], &b = approx[origin[2 * e + 1]];
+      const std::size_t first = band(std::min(a.y.inf(), b.y.inf()));
+      const std::size_t last = band(std::max(a.y.sup(), b.y.sup()));
+      for (std::size_t k = first; k <= last; ++k) in_band[k].push_back(e);
+    }
+  for (const auto& [root, v] : lowest) {
+    std::size_t outer = around[v].front();
+    for (std::size_t h : around[v]) {
+      const Direction d = direction(h), best = direction(outer);
+      const bool vertical = d.dx() == 0;
+      if (best.dx() != 0 && (vertical || cross_sign(best, d) > 0)) outer = h;
+    }
+    const RationalPoint2& p = points[v];
+    // The nearest edge of another component crossing the ray leftward from p (just above
+    // it: an edge counts when its lower end is at or below p.y and its upper end above).
+    std::optional<std::size_t> hit;
+    Rational hit_x;
+    std::vector<std::size_t> candidates;
+    if (lowest.size() > 1)
+      for (std::size_t k = band(approx[v].y.inf()); k <= band(approx[v].y.sup()); ++k)
+        candidates.insert(candidates.end(), in_band[k].begin(), in_band[k].end());
+    const IntervalPoint& pi = approx[v];
+    double hit_low = -std::numeric_limits<double>::infinity();  // below the nearest x so far
+    for (const std::size_t e : candidates) {
+      {
+        // Interval filters: an edge wholly above, below, right of p or left of the nearest
+        // so far is not the nearest.
+        const IntervalPoint &ai = approx[origin[2 * e]], &bi = approx[origin[2 * e + 1]];
+        if (std::max(ai.y.sup(), bi.y.sup()) < pi.y.inf() ||
+            std::min(ai.y.inf(), bi.y.inf()) > pi.y.sup() ||
+            std::min(ai.x.inf(), bi.x.inf()) > pi.x.sup() ||
+            std::max(ai.x.sup(), bi.x.sup()) < hit_low)
+          continue;
+      }
+      if (component.root(origin[2 * e]) == root) continue;
+      std::size_t lo = origin[2 * e], hi = origin[2 * e + 1];
+      int c = cmp(points[lo].y(), points[hi].y());
+      if (c == 0) continue;
+      if (c > 0) std::swap(lo, hi);
+      if (cmp(points[lo].y(), p.y()) > 0 || cmp(p.y(), points[hi].y()) >= 0) continue;
+      const RationalPoint2 &a = points[lo], &b = points[hi];
+      const Rational x = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+      if (cmp(x, p.x()) >= 0) continue;  // not on the left (never equal: components apart)
+      bool nearer = !hit || cmp(x, hit_x) > 0;
+      if (hit && cmp(x, hit_x) == 0) {
+        // Both cross at one point: the one further right just above it is nearer.
+        std::size_t hlo = origin[2 * *hit], hhi = origin[2 * *hit + 1];
+        if (cmp(points[hlo].y(), points[hhi].y()) > 0) std::swap(hlo, hhi);
+        const Rational mine = (b.x() - a.x()) / (b.y() - a.y());
+        const Rational theirs = (points[hhi].x() - points[hlo].x()) / (points[hhi].y() - points[hlo].y());
+        nearer = cmp(mine, theirs) > 0;
+      }
+      if (nearer) {
+        hit = e;
+        hit_x = x;
+        hit_low = CGAL::to_interval(x).first;
+      }
+    }
+    if (std::getenv("ARR_DEBUG")) {
+      std::size_t len = 0;
+      for (std::size_t h = 0; h < 2 * edges; ++h) len += cycle[h] == cycle[outer];
+      std::fprintf(stderr, "component at (%g,%g): %zu edges around, outer to (%g,%g), cycle length %zu, hit %s\n",
+                   CGAL::to_double(p.x()), CGAL::to_double(p.y()), around[v].size(),
+                   CGAL::to_double(points[origin[outer ^ 1]].x()), CGAL::to_double(points[origin[outer ^ 1]].y()), len,
+                   hit ? "yes" : "no");
+    }
+    if (!hit) {
+      faces.join(cycle[outer], cycles);
+      continue;
+    }
+    // p lies on the right of the edge directed upward: the face on the left of the
+    // downward halfedge.
+    const std::size_t e = *hit;
+    const bool even_up = cmp(points[origin[2 * e]].y(), points[origin[2 * e + 1]].y()) < 0;
+    const std::size_t down = even_up ? 2 * e + 1 : 2 * e;
+    faces.join(cycle[outer], cycle[down]);
+  }
+
+  if (timing) std::fprintf(stderr, "  %zu components\n", lowest.size());
+  lap("containment");
+  // Face numbers (the unbounded face 0) and counts spread from it across the edges.
+  std::vector<std::size_t> number(cycles + 1, SIZE_MAX);
+  number[faces.root(cycles)] = 0;
+  result.faces = 1;
+  for (std::size_t c = 0; c < cycles; ++c)
+    if (number[faces.root(c)] == SIZE_MAX) number[faces.root(c)] = result.faces++;
+  result.face.resize(2 * edges);
+  for (std::size_t h = 0; h < 2 * edges; ++h) result.face[h] = number[faces.root(cycle[h])];
+  std::vector<std::vector<std::size_t>> halfedges_of(result.faces);
+  for (std::size_t h = 0; h < 2 * edges; ++h) halfedges_of[result.face[h]].push_back(h);
+  result.count.assign(result.faces, 0);
+  std::vector<bool> reached(result.faces, false);
+  reached[0] = true;
+  std::vector<std::size_t> queue{0};
+  while (!queue.empty()) {
+    const std::size_t f = queue.back();
+    queue.pop_back();
+    for (std::size_t h : halfedges_of[f]) {
+      const std::size_t g = result.face[h ^ 1];
+      if (reached[g]) continue;
+      reached[g] = true;
+      const long left = result.left[h / 2];
+      result.count[g] = result.count[f] + (h % 2 == 0 ? -left : left);
+      queue.push_back(g);
+    }
+  }
+  lap("counts");
+  return result;
+}
+
+std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
+    const SegmentArrangement& arrangement, const std::function<long(long)>& key_of) {
+  const std::size_t halfedges = arrangement.origin.size();
+  std::vector<long> keys(arrangement.faces);
+  for (std::size_t f = 0; f < arrangement.faces; ++f) keys[f] = key_of(arrangement.count[f]);
+  Sets sets(arrangement.faces);
+  for (std::size_t h = 0; h < halfedges; h += 2) {
+    const std::size_t a = arrangement.face[h], b = arrangement.face[h + 1];
+    if (a != b && keys[a] >= 0 && keys[a] == keys[b]) sets.join(a, b);
+  }
+  const auto boundary = [&](std::size_t h) {
+    const long k = keys[arrangement.face[h]];
+    return k >= 0 && k != keys[arrangement.face[h ^ 1]];
+  };
+  std::vector<Point2> points(arrangement.points.size());
+  for_each_index(points.size(), points.size() > 4096, [&](std::size_t v) {
+    points[v] = point_from<Point2>(RationalPoint2(arrangement.points[v]));
+  });
+  std::vector<Polygon2> polygons(arrangement.faces);
+  std::vector<bool> traced(halfedges, false);
+  for (std::size_t h = 0; h < halfedges; ++h) {
+    if (!boundary(h) || traced[h]) continue;
+    Ring2 ring;
+    std::size_t at = h;
+    do {
+      traced[at] = true;
+      ring.push_back(points[arrangement.origin[at]]);
+      std::size_t next = arrangement.next[at];
+      while (!boundary(next)) next = arrangement.next[next ^ 1];
+      at = next;
+    } while (at != h);
+    Ring2 canonical = canonical_ring(ring);
+    if (canonical.empty()) continue;
+    Polygon2& polygon = polygons[sets.root(arrangement.face[h])];
+    if (CGAL::orientation_2(canonical.begin(), canonical.end(), Kernel()) == CGAL::COUNTERCLOCKWISE)
+      polygon.outer = std::move(canonical);
+    else
+      polygon.holes.push_back(std::move(canonical));
+  }
+  std::map<long, std::vector<Polygon2>> by_key;
+  for (std::size_t f = 0; f < arrangement.faces; ++f)
+    if (!polygons[f].outer.empty()) by_key[keys[f]].push_back(std::move(polygons[f]));
+  return {by_key.begin(), by_key.end()};
+}
+
+}  // namespace penumbra::proto

@@ -1,0 +1,46 @@
+#pragma once
+// PROTOTYPE (not in the build): an arrangement of segments made for the sun-hours overlay,
+// found pair by pair instead of by CGAL's sweep (docs/performance.md, "What an overlay made
+// for these inputs would cost"). Every decision is exact: corners and supporting lines are
+// numbered by their exact values, orientations are signs of integer expressions (filtered
+// by intervals), crossings come from Cramer's rule in integers.
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "penumbra/geometry/exact.h"
+#include "penumbra/shadow/region.h"
+
+namespace penumbra::proto {
+
+// A segment of a layer's ring, with what it adds to the count on its left (directed from
+// its lexicographically smaller end to its larger one): +weight or -weight.
+struct LayerSegment {
+  Point2 a, b;
+  long left = 0;  // added on the left of a->b (a < b lexicographically), subtracted on the right
+};
+
+// The arrangement: vertices, edges as halfedge pairs (2e from the smaller vertex to the
+// larger, 2e + 1 back), each halfedge's next around the face on its left, and faces.
+struct SegmentArrangement {
+  std::vector<RationalPoint2> points;      // by vertex
+  std::vector<std::size_t> origin;         // by halfedge
+  std::vector<std::size_t> next;           // by halfedge
+  std::vector<long> left;                  // by edge: the count added crossing into 2e's left
+  std::vector<std::size_t> face;           // by halfedge: its face (0 is the unbounded face)
+  std::vector<long> count;                 // by face
+  std::size_t faces = 0;
+};
+
+// returns the arrangement of segments (each of positive length), with counts: the unbounded
+// face counts 0, and crossing a segment adds its left count on its left.
+SegmentArrangement arrange(const std::vector<LayerSegment>& segments);
+
+// returns the polygons of the faces whose key (from their count) is k >= 0, by k: the
+// boundaries between keys traced into canonical rings (counter-clockwise outer boundaries,
+// clockwise holes), as region_overlay.cpp's polygons_by_key does on CGAL's arrangement.
+std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
+    const SegmentArrangement& arrangement, const std::function<long(long)>& key);
+
+}  // namespace penumbra::proto
