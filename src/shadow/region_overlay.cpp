@@ -172,8 +172,8 @@ template <typename Key>
 std::map<std::ptrdiff_t, std::vector<Polygon2>> polygons_by_key(
     const proto::SegmentArrangement& overlay, const Key& key_of) {
   std::map<std::ptrdiff_t, std::vector<Polygon2>> by_key;
-  for (auto& [key, polygons] :
-       proto::polygons_by_count(overlay, [&](long count) { return static_cast<long>(key_of(count)); }))
+  for (auto& [key, polygons] : proto::polygons_by_count(
+           overlay, [&](long count) { return static_cast<long>(key_of(count)); }))
     by_key[key] = std::move(polygons);
   return by_key;
 }

@@ -3,9 +3,6 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -46,8 +43,9 @@ std::size_t hash_of(const RationalPoint2& p) {
 // distinct points' indices in order of first appearance.
 std::vector<std::size_t> first_equal(const std::vector<RationalPoint2>& points) {
   std::vector<std::size_t> hashes(points.size());
-  for_each_index(points.size(), points.size() > 4096,
-                 [&](std::size_t k) { hashes[k] = hash_of(points[k]); }, 256);
+  for_each_index(
+      points.size(), points.size() > 4096, [&](std::size_t k) { hashes[k] = hash_of(points[k]); },
+      256);
   std::vector<std::size_t> order(points.size());
   std::iota(order.begin(), order.end(), 0);
   tbb::parallel_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -208,13 +206,6 @@ struct Sets {
 SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   SegmentArrangement result;
   const std::size_t n = input.size();
-  auto last = std::chrono::steady_clock::now();
-  const bool timing = std::getenv("ARR_TIMES") != nullptr;
-  const auto lap = [&](const char* name) {
-    const auto now = std::chrono::steady_clock::now();
-    if (timing) std::fprintf(stderr, "  %s %.2f s\n", name, std::chrono::duration<double>(now - last).count());
-    last = now;
-  };
 
   // Corners numbered by their exact values; each segment from its smaller corner to its larger.
   std::vector<RationalPoint2> raw;
@@ -249,14 +240,13 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     }
     segs[k] = {a, b, left, 0};
   }
-  lap("corners");
   // Lines numbered by their exact triples.
   std::vector<Line> lines;
   {
     std::vector<Line> of(n);
-    for_each_index(n, n > 1024,
-                   [&](std::size_t k) { of[k] = line_through(points[segs[k].a], points[segs[k].b]); },
-                   64);
+    for_each_index(
+        n, n > 1024,
+        [&](std::size_t k) { of[k] = line_through(points[segs[k].a], points[segs[k].b]); }, 64);
     std::unordered_multimap<std::size_t, std::size_t> by_hash;
     for (std::size_t k = 0; k < n; ++k) {
       const std::size_t h = hash_of(of[k]);
@@ -272,11 +262,11 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     }
   }
 
-  lap("lines");
   // Intervals of the corners and of the lines, for the filters.
   std::vector<IntervalPoint> approx(points.size());
-  for_each_index(points.size(), points.size() > 4096,
-                 [&](std::size_t v) { approx[v] = interval_of(points[v]); }, 256);
+  for_each_index(
+      points.size(), points.size() > 4096,
+      [&](std::size_t v) { approx[v] = interval_of(points[v]); }, 256);
   std::vector<IntervalLine> line_approx(lines.size());
   for (std::size_t l = 0; l < lines.size(); ++l) line_approx[l] = interval_of(lines[l]);
   const auto less = [&](std::size_t u, std::size_t v) {
@@ -287,8 +277,7 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t,
                                                           CGAL::Box_intersection_d::ID_EXPLICIT>;
   std::vector<Box> boxes;
-  for (std::size_t k = 0; k < n; ++k)
-    boxes.emplace_back(input[k].a.bbox() + input[k].b.bbox(), k);
+  for (std::size_t k = 0; k < n; ++k) boxes.emplace_back(input[k].a.bbox() + input[k].b.bbox(), k);
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& p, const Box& q) {
     pairs.emplace_back(p.handle(), q.handle());
@@ -344,7 +333,6 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
       },
       256);
 
-  lap("pairs");
   // Crossings numbered with the corners by their exact values.
   const std::size_t corners = points.size();
   std::vector<std::size_t> crossing_vertex(pairs.size(), SIZE_MAX);
@@ -373,10 +361,10 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     }
   }
 
-  lap("crossing ids");
   approx.resize(points.size());
-  for_each_index(points.size() - corners, points.size() - corners > 4096,
-                 [&](std::size_t k) { approx[corners + k] = interval_of(points[corners + k]); }, 256);
+  for_each_index(
+      points.size() - corners, points.size() - corners > 4096,
+      [&](std::size_t k) { approx[corners + k] = interval_of(points[corners + k]); }, 256);
   // Each segment's vertices in order, consecutive ones the edges.
   std::vector<std::vector<std::size_t>> on_segment(n);
   for (std::size_t k = 0; k < n; ++k) on_segment[k] = {segs[k].a, segs[k].b};
@@ -391,9 +379,8 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
       n, n > 1024,
       [&](std::size_t k) {
         std::vector<std::size_t>& list = on_segment[k];
-        std::sort(list.begin(), list.end(), [&](std::size_t u, std::size_t v) {
-          return u != v && less(u, v);
-        });
+        std::sort(list.begin(), list.end(),
+                  [&](std::size_t u, std::size_t v) { return u != v && less(u, v); });
         list.erase(std::unique(list.begin(), list.end()), list.end());
       },
       64);
@@ -405,11 +392,14 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     std::size_t segment;
   };
   std::vector<Piece> pieces(start[n]);
-  for_each_index(n, n > 1024, [&](std::size_t k) {
-    const std::vector<std::size_t>& list = on_segment[k];
-    for (std::size_t i = 0; i + 1 < list.size(); ++i)
-      pieces[start[k] + i] = {(static_cast<std::uint64_t>(list[i]) << 32) | list[i + 1], k};
-  }, 64);
+  for_each_index(
+      n, n > 1024,
+      [&](std::size_t k) {
+        const std::vector<std::size_t>& list = on_segment[k];
+        for (std::size_t i = 0; i + 1 < list.size(); ++i)
+          pieces[start[k] + i] = {(static_cast<std::uint64_t>(list[i]) << 32) | list[i + 1], k};
+      },
+      64);
   tbb::parallel_sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
     return a.key != b.key ? a.key < b.key : a.segment < b.segment;
   });
@@ -426,7 +416,6 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   }
   const std::size_t edges = edge_line.size();
 
-  lap("edges");
   // Around each vertex, its outgoing halfedges counter-clockwise; next[h] for the halfedge
   // h entering a vertex is the outgoing one clockwise after its twin.
   const auto direction = [&](std::size_t h) {
@@ -451,7 +440,6 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
       },
       64);
 
-  lap("around");
   // Cycles of next; components of the edges; each component's outer cycle leaves its
   // lexicographically smallest vertex along its most counter-clockwise edge.
   std::vector<std::size_t> cycle(2 * edges, SIZE_MAX);
@@ -470,7 +458,6 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     if (!added && less(v, it->second)) it->second = v;
   }
 
-  lap("cycles");
   // Faces: the cycles, each component's outer cycle joined to the face that holds it (found
   // by a ray from its smallest vertex to the left), and the unbounded face (index cycles).
   Sets faces(cycles + 1);
@@ -497,9 +484,9 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   if (lowest.size() > 1)
     for (std::size_t e = 0; e < edges; ++e) {
       const IntervalPoint &a = approx[origin[2 * e]], &b = approx[origin[2 * e + 1]];
-      const std::size_t first = band(std::min(a.y.inf(), b.y.inf()));
-      const std::size_t last = band(std::max(a.y.sup(), b.y.sup()));
-      for (std::size_t k = first; k <= last; ++k) in_band[k].push_back(e);
+      const std::size_t bottom = band(std::min(a.y.inf(), b.y.inf()));
+      const std::size_t top = band(std::max(a.y.sup(), b.y.sup()));
+      for (std::size_t k = bottom; k <= top; ++k) in_band[k].push_back(e);
     }
   for (const auto& [root, v] : lowest) {
     std::size_t outer = around[v].front();
@@ -545,7 +532,8 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
         std::size_t hlo = origin[2 * *hit], hhi = origin[2 * *hit + 1];
         if (cmp(points[hlo].y(), points[hhi].y()) > 0) std::swap(hlo, hhi);
         const Rational mine = (b.x() - a.x()) / (b.y() - a.y());
-        const Rational theirs = (points[hhi].x() - points[hlo].x()) / (points[hhi].y() - points[hlo].y());
+        const Rational theirs =
+            (points[hhi].x() - points[hlo].x()) / (points[hhi].y() - points[hlo].y());
         nearer = cmp(mine, theirs) > 0;
       }
       if (nearer) {
@@ -553,14 +541,6 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
         hit_x = x;
         hit_low = CGAL::to_interval(x).first;
       }
-    }
-    if (std::getenv("ARR_DEBUG")) {
-      std::size_t len = 0;
-      for (std::size_t h = 0; h < 2 * edges; ++h) len += cycle[h] == cycle[outer];
-      std::fprintf(stderr, "component at (%g,%g): %zu edges around, outer to (%g,%g), cycle length %zu, hit %s\n",
-                   CGAL::to_double(p.x()), CGAL::to_double(p.y()), around[v].size(),
-                   CGAL::to_double(points[origin[outer ^ 1]].x()), CGAL::to_double(points[origin[outer ^ 1]].y()), len,
-                   hit ? "yes" : "no");
     }
     if (!hit) {
       faces.join(cycle[outer], cycles);
@@ -574,8 +554,6 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     faces.join(cycle[outer], cycle[down]);
   }
 
-  if (timing) std::fprintf(stderr, "  %zu components\n", lowest.size());
-  lap("containment");
   // Face numbers (the unbounded face 0) and counts spread from it across the edges.
   std::vector<std::size_t> number(cycles + 1, SIZE_MAX);
   number[faces.root(cycles)] = 0;
@@ -602,7 +580,6 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
       queue.push_back(g);
     }
   }
-  lap("counts");
   return result;
 }
 

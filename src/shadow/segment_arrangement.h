@@ -24,12 +24,12 @@ struct LayerSegment {
 // The arrangement: vertices, edges as halfedge pairs (2e from the smaller vertex to the
 // larger, 2e + 1 back), each halfedge's next around the face on its left, and faces.
 struct SegmentArrangement {
-  std::vector<RationalPoint2> points;      // by vertex
-  std::vector<std::size_t> origin;         // by halfedge
-  std::vector<std::size_t> next;           // by halfedge
-  std::vector<long> left;                  // by edge: the count added crossing into 2e's left
-  std::vector<std::size_t> face;           // by halfedge: its face (0 is the unbounded face)
-  std::vector<long> count;                 // by face
+  std::vector<RationalPoint2> points;  // by vertex
+  std::vector<std::size_t> origin;     // by halfedge
+  std::vector<std::size_t> next;       // by halfedge
+  std::vector<long> left;              // by edge: the count added crossing into 2e's left
+  std::vector<std::size_t> face;       // by halfedge: its face (0 is the unbounded face)
+  std::vector<long> count;             // by face
   std::size_t faces = 0;
 };
 
