@@ -2,17 +2,9 @@
 
 #include <CGAL/box_intersection_d.h>
 
-#include <cstdlib>
+#include <iterator>
 #include <map>
-#include <memory>
 #include <numeric>
-#include <optional>
-
-#include <CGAL/Arr_consolidated_curve_data_traits_2.h>
-#include <CGAL/Arr_extended_dcel.h>
-#include <CGAL/Arr_segment_traits_2.h>
-#include <CGAL/Arrangement_2.h>
-#include <CGAL/Polygon_2_algorithms.h>
 
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
@@ -55,95 +47,6 @@ std::vector<std::vector<Piece>> clusters_of(const std::vector<Piece>& pieces) {
   return clusters;
 }
 
-// One arrangement of the edges of all the layers overlaid, each edge knowing the segments
-// of the layers' rings it lies on (Arr_consolidated_curve_data_traits_2: overlapping
-// segments become one edge with all their indices), hence the layers it bounds and on
-// which side, each face its count.
-using SegmentTraits = CGAL::Arr_segment_traits_2<Kernel>;
-using Traits = CGAL::Arr_consolidated_curve_data_traits_2<SegmentTraits, std::size_t>;
-// What a face keeps: its count, and its place in the arrangement's list of faces (numbered
-// once built, so that passes over the map index vectors instead of ordered maps of handles).
-struct FaceData {
-  long count = 0;
-  std::size_t id = 0;
-};
-// A vertex and a halfedge keep their places in the lists of vertices and halfedges.
-using Dcel = CGAL::Arr_extended_dcel<Traits, std::size_t, std::size_t, FaceData>;
-using Arrangement = CGAL::Arrangement_2<Traits, Dcel>;
-
-// The line through a segment's ends, a x + b y + c = 0, with integer coefficients: CGAL's
-// line through two points (a = py - qy, b = qx - px, c = px qy - py qx) times the least
-// common multiple of its coefficients' denominators.
-struct IntegerLine {
-  mpz_class a, b, c;
-};
-
-IntegerLine integer_line(const Point2& from, const Point2& to) {
-  const RationalPoint2& p = exact_value(from);
-  const RationalPoint2& q = exact_value(to);
-  const Rational a = p.y() - q.y(), b = q.x() - p.x(), c = p.x() * q.y() - p.y() * q.x();
-  mpz_class common;
-  mpz_lcm(common.get_mpz_t(), a.get_den_mpz_t(), b.get_den_mpz_t());
-  mpz_lcm(common.get_mpz_t(), common.get_mpz_t(), c.get_den_mpz_t());
-  return {a.get_num() * (common / a.get_den()), b.get_num() * (common / b.get_den()),
-          c.get_num() * (common / c.get_den())};
-}
-
-// returns the point where two lines cross, or nothing when they are parallel. Cramer's
-// rule on a1 x + b1 y = -c1, a2 x + b2 y = -c2: x = (b1 c2 - b2 c1) / d,
-// y = (a2 c1 - a1 c2) / d, d = a1 b2 - a2 b1, in integers, then one reduction (a gcd) per
-// coordinate, where CGAL's lazy intersection of the two lines computes in rationals and
-// reduces after every operation.
-std::optional<RationalPoint2> crossing(const IntegerLine& l, const IntegerLine& m) {
-  const mpz_class d = l.a * m.b - m.a * l.b;
-  if (sgn(d) == 0) return std::nullopt;
-  Rational x(l.b * m.c - m.b * l.c, d), y(m.a * l.c - l.a * m.c, d);
-  x.canonicalize();
-  y.canonicalize();
-  return RationalPoint2(x, y);
-}
-
-// returns the points of the arrangement's vertices by vertex id, each with its exact value:
-// a vertex where segments cross, whose point CGAL made as a lazy intersection, gets the same
-// point computed from the integer lines of two segments through it (the exact values of
-// the crossings were a third of the time of a ground's overlay); the segments' ends are
-// kept as they are. Across threads.
-std::vector<Point2> exact_vertices(const Arrangement& arrangement,
-                                   const std::vector<Traits::Curve_2>& segments) {
-  std::vector<IntegerLine> lines(segments.size());
-  for_each_index(
-      segments.size(), segments.size() > 256,
-      [&](std::size_t k) { lines[k] = integer_line(segments[k].source(), segments[k].target()); },
-      64);
-  std::vector<Arrangement::Vertex_const_handle> vertices;
-  for (auto v = arrangement.vertices_begin(); v != arrangement.vertices_end(); ++v)
-    vertices.push_back(v);
-  std::vector<Point2> points(vertices.size());
-  for_each_index(
-      vertices.size(), vertices.size() > 256,
-      [&](std::size_t k) {
-        const auto vertex = vertices[k];
-        Point2& point = points[vertex->data()];
-        point = vertex->point();
-        if (has_exact_value(point) || vertex->is_isolated()) return;
-        const IntegerLine* first = nullptr;
-        auto halfedge = vertex->incident_halfedges();
-        const auto end = halfedge;
-        do {
-          for (const std::size_t segment : halfedge->curve().data()) {
-            if (!first) {
-              first = &lines[segment];
-            } else if (std::optional<RationalPoint2> p = crossing(*first, lines[segment])) {
-              point = point_from<Point2>(std::move(*p));
-              return;
-            }
-          }
-        } while (++halfedge != end);
-      },
-      64);
-  return points;
-}
-
 // A region to overlay: its polygons (canonical rings, inside on the left of each) and what
 // it adds to the count of the points it holds.
 struct Layer {
@@ -153,8 +56,8 @@ struct Layer {
 
 // returns the overlay of layers: the pairwise arrangement of their rings' segments
 // (segment_arrangement.h), each face counting the weights of the layers that hold it.
-proto::SegmentArrangement overlay(const std::vector<Layer>& layers) {
-  std::vector<proto::LayerSegment> segments;
+detail::SegmentArrangement overlay(const std::vector<Layer>& layers) {
+  std::vector<detail::LayerSegment> segments;
   for (const Layer& layer : layers) {
     const auto add = [&](const Ring2& ring) {
       for (std::size_t i = 0; i < ring.size(); ++i)
@@ -165,14 +68,14 @@ proto::SegmentArrangement overlay(const std::vector<Layer>& layers) {
       for (const Ring2& hole : polygon->holes) add(hole);
     }
   }
-  return proto::arrange(segments);
+  return detail::arrange(segments);
 }
 
 template <typename Key>
 std::map<std::ptrdiff_t, std::vector<Polygon2>> polygons_by_key(
-    const proto::SegmentArrangement& overlay, const Key& key_of) {
+    const detail::SegmentArrangement& overlay, const Key& key_of) {
   std::map<std::ptrdiff_t, std::vector<Polygon2>> by_key;
-  for (auto& [key, polygons] : proto::polygons_by_count(
+  for (auto& [key, polygons] : detail::polygons_by_count(
            overlay, [&](long count) { return static_cast<long>(key_of(count)); }))
     by_key[key] = std::move(polygons);
   return by_key;
@@ -196,7 +99,7 @@ ClusterParts overlay_cluster(const std::vector<Piece>& cluster) {
   for (const Piece& piece : cluster) by_region[piece.region].polygons.push_back(piece.polygon);
   std::vector<Layer> layers;
   for (auto& entry : by_region) layers.push_back(std::move(entry.second));
-  const proto::SegmentArrangement all = overlay(layers);
+  const detail::SegmentArrangement all = overlay(layers);
   for (auto& [count, polygons] : polygons_by_key(
            all, [](long data) { return data > 0 ? static_cast<std::ptrdiff_t>(data) : -1; }))
     parts.by_count[static_cast<std::size_t>(count)] = std::move(polygons);
@@ -206,7 +109,7 @@ ClusterParts overlay_cluster(const std::vector<Piece>& cluster) {
 
 // returns the polygons of the faces of the overlay of layers whose count is count.
 Region2 region_counting(const std::vector<Layer>& layers, long count) {
-  const proto::SegmentArrangement all = overlay(layers);
+  const detail::SegmentArrangement all = overlay(layers);
   return canonical_region(
       std::move(polygons_by_key(all, [count](long data) { return data == count ? 0 : -1; })[0]));
 }

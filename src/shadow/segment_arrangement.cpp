@@ -7,15 +7,15 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <unordered_map>
 
-#include <CGAL/Polygon_2_algorithms.h>
 #include <tbb/parallel_sort.h>
 
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
 
-namespace penumbra::proto {
+namespace penumbra::detail {
 namespace {
 
 // ---- exact values by hash --------------------------------------------------------------
@@ -187,6 +187,34 @@ bool before(const Direction& u, const Direction& v) {
   };
   if (half(u) != half(v)) return half(u) < half(v);
   return cross_sign(u, v) > 0;
+}
+
+// returns the sign of the area that the ring of vertices [first, last) encloses,
+// counter-clockwise positive: the shoelace sum about its first point, in intervals and,
+// when they cannot tell, in rationals. A ring traced round a face's parts of one count is
+// an outer boundary (every loop of it counter-clockwise, the sum positive) or a hole
+// (every loop clockwise), even where it touches itself.
+int area_sign(const std::size_t* first, const std::size_t* last,
+              const std::vector<RationalPoint2>& points) {
+  const std::size_t n = static_cast<std::size_t>(last - first);
+  const RationalPoint2& o = points[*first];
+  {
+    std::vector<IntervalPoint> at(n);  // made before rounding upward
+    for (std::size_t i = 0; i < n; ++i) at[i] = interval_of(points[first[i]]);
+    CGAL::Protect_FPU_rounding<true> upward;
+    Interval sum = 0;
+    for (std::size_t i = 1; i + 1 < n; ++i)
+      sum += (at[i].x - at[0].x) * (at[i + 1].y - at[0].y) -
+             (at[i + 1].x - at[0].x) * (at[i].y - at[0].y);
+    const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(sum);
+    if (CGAL::is_certain(sign)) return static_cast<int>(sign.make_certain());
+  }
+  Rational sum = 0;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const RationalPoint2 &p = points[first[i]], &q = points[first[i + 1]];
+    sum += (p.x() - o.x()) * (q.y() - o.y()) - (q.x() - o.x()) * (p.y() - o.y());
+  }
+  return sgn(sum);
 }
 
 // ---- union-find ---------------------------------------------------------------------
@@ -385,6 +413,8 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
       },
       64);
   // Every piece (u, v, segment) sorted by (u, v) across threads: equal pieces are one edge.
+  // A piece's key holds both vertices in 32 bits each.
+  if (points.size() > 0xFFFFFFFFu) throw std::length_error("an overlay of more than 2^32 vertices");
   std::vector<std::size_t> start(n + 1, 0);
   for (std::size_t k = 0; k < n; ++k) start[k + 1] = start[k] + on_segment[k].size() - 1;
   struct Piece {
@@ -601,26 +631,48 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
   for_each_index(points.size(), points.size() > 4096, [&](std::size_t v) {
     points[v] = point_from<Point2>(RationalPoint2(arrangement.points[v]));
   });
-  std::vector<Polygon2> polygons(arrangement.faces);
+  // The rings traced (vertex numbers only), one after another.
+  std::vector<std::size_t> ring_vertices, ring_start{0}, ring_face;
   std::vector<bool> traced(halfedges, false);
   for (std::size_t h = 0; h < halfedges; ++h) {
     if (!boundary(h) || traced[h]) continue;
-    Ring2 ring;
     std::size_t at = h;
     do {
       traced[at] = true;
-      ring.push_back(points[arrangement.origin[at]]);
+      ring_vertices.push_back(arrangement.origin[at]);
       std::size_t next = arrangement.next[at];
       while (!boundary(next)) next = arrangement.next[next ^ 1];
       at = next;
     } while (at != h);
-    Ring2 canonical = canonical_ring(ring);
-    if (canonical.empty()) continue;
-    Polygon2& polygon = polygons[sets.root(arrangement.face[h])];
-    if (CGAL::orientation_2(canonical.begin(), canonical.end(), Kernel()) == CGAL::COUNTERCLOCKWISE)
-      polygon.outer = std::move(canonical);
+    ring_start.push_back(ring_vertices.size());
+    ring_face.push_back(sets.root(arrangement.face[h]));
+  }
+  // Each made canonical and told outer boundary or hole, across threads: by the sign of its
+  // area, since an orientation test at one corner (CGAL::orientation_2) is wrong at a
+  // corner where the ring touches itself.
+  const std::size_t rings = ring_face.size();
+  std::vector<Ring2> canonical(rings);
+  std::vector<int> sign(rings, 0);
+  for_each_index(
+      rings, rings > 64,
+      [&](std::size_t r) {
+        const std::size_t* first = ring_vertices.data() + ring_start[r];
+        const std::size_t* last = ring_vertices.data() + ring_start[r + 1];
+        Ring2 ring;
+        ring.reserve(static_cast<std::size_t>(last - first));
+        for (const std::size_t* v = first; v != last; ++v) ring.push_back(points[*v]);
+        canonical[r] = canonical_ring(ring);
+        if (!canonical[r].empty()) sign[r] = area_sign(first, last, arrangement.points);
+      },
+      16);
+  std::vector<Polygon2> polygons(arrangement.faces);
+  for (std::size_t r = 0; r < rings; ++r) {
+    if (canonical[r].empty()) continue;
+    Polygon2& polygon = polygons[ring_face[r]];
+    if (sign[r] > 0)
+      polygon.outer = std::move(canonical[r]);
     else
-      polygon.holes.push_back(std::move(canonical));
+      polygon.holes.push_back(std::move(canonical[r]));
   }
   std::map<long, std::vector<Polygon2>> by_key;
   for (std::size_t f = 0; f < arrangement.faces; ++f)
@@ -628,4 +680,4 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
   return {by_key.begin(), by_key.end()};
 }
 
-}  // namespace penumbra::proto
+}  // namespace penumbra::detail

@@ -1,9 +1,11 @@
 #pragma once
-// PROTOTYPE (not in the build): an arrangement of segments made for the sun-hours overlay,
-// found pair by pair instead of by CGAL's sweep (docs/performance.md, "What an overlay made
-// for these inputs would cost"). Every decision is exact: corners and supporting lines are
-// numbered by their exact values, orientations are signs of integer expressions (filtered
-// by intervals), crossings come from Cramer's rule in integers.
+// An arrangement of segments made for the overlays of many regions (region_overlay.cpp;
+// sun-hours overlays hundreds of shadows on one face), found pair by pair instead of by a
+// sweep: the pairs of segments whose boxes meet are classified independently, across
+// threads (docs/performance.md, "The pairwise overlay"). Every decision is exact: corners
+// and supporting lines are numbered by their exact values, orientations are signs of
+// integer expressions (filtered by intervals), crossings come from Cramer's rule in
+// integers, and no face is located by an orientation test of its own.
 
 #include <cstddef>
 #include <functional>
@@ -12,7 +14,7 @@
 #include "penumbra/geometry/exact.h"
 #include "penumbra/shadow/region.h"
 
-namespace penumbra::proto {
+namespace penumbra::detail {
 
 // A segment of a layer's ring, with what it adds to the count on its left (directed from
 // its lexicographically smaller end to its larger one): +weight or -weight.
@@ -33,7 +35,9 @@ struct SegmentArrangement {
   std::size_t faces = 0;
 };
 
-// returns the arrangement of segments (each of positive length), with counts: the unbounded
+// returns the arrangement of segments (each of positive length; exact values in lowest
+// terms, as GMP requires of every operand and as arithmetic leaves them: corners are
+// numbered by hashes of their limbs), with counts: the unbounded
 // face counts 0, and crossing a segment adds its left count on its left.
 SegmentArrangement arrange(const std::vector<LayerSegment>& segments);
 
@@ -43,4 +47,4 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& segments);
 std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
     const SegmentArrangement& arrangement, const std::function<long(long)>& key);
 
-}  // namespace penumbra::proto
+}  // namespace penumbra::detail

@@ -134,6 +134,32 @@ BOOST_AUTO_TEST_CASE(no_regions_leave_the_window_whole_with_the_base_count) {
   BOOST_TEST((parts.front().region == canonical_region({window})));
 }
 
+// Two triangles touching at their leftmost corner (3, 11/2): the window's part around them
+// is bounded by one ring that passes that corner twice, going round each triangle
+// clockwise. Its turn at that corner, where the ring goes from one triangle to the other,
+// is counter-clockwise: an orientation test there took it for the part's outer boundary,
+// and the window's own boundary was lost. The areas, derived by hand: each triangle
+// 1/2 |det| = 1/2 |1 * 3/2 - 1 * 0| = 1/2 |1 * 1/2 + 1 * 1| = 3/4; the window 64.
+BOOST_AUTO_TEST_CASE(a_ring_touching_itself_at_its_smallest_corner_is_a_hole) {
+  const Polygon2 window{canonical_ring(square(0, 0, 8, 8)), {}};
+  const Exact triangle = Exact(3) / 4;
+  const Point2 touch(3, Exact(11) / 2);
+  const Region2 up = canonical_region(
+      {Polygon2{canonical_ring({touch, Point2(4, Exact(13) / 2), Point2(3, 7)}), {}}});
+  const Region2 down = canonical_region(
+      {Polygon2{canonical_ring({touch, Point2(4, Exact(9) / 2), Point2(4, 6)}), {}}});
+  BOOST_TEST_REQUIRE((up.area == triangle));
+  BOOST_TEST_REQUIRE((down.area == triangle));
+  for (const auto& regions : {std::vector<const Region2*>{&up, &down}, {&down, &up}}) {
+    const std::vector<Coverage> parts = coverage(window, regions);
+    BOOST_TEST_REQUIRE(parts.size() == 2u);
+    BOOST_TEST((parts[0].region.area == Exact(64) - 2 * triangle));
+    BOOST_TEST_REQUIRE(parts[0].region.polygons.size() == 1u);
+    BOOST_TEST((parts[0].region.polygons[0].outer == window.outer));
+    BOOST_TEST((parts[1].region.area == 2 * triangle));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(an_intersection_holds_the_points_both_regions_hold) {
   // Unions of random triangles (one less a hole) intersected pairwise: at random rational
   // points, inside the intersection exactly when strictly inside both; its area is that of

@@ -1,8 +1,9 @@
 #pragma once
 // The overlay of many regions of one face: the face cut into the parts that exactly k of
-// the regions cover (an arrangement of all their edges, CGAL Arrangement_2, with a count
-// on every face). Sun-hours (issue 19, docs/sun-hours.md) overlays the shadows of the time
-// steps this way, so that every part of a face carries its sunlit duration.
+// the regions cover (an arrangement of all their edges, found pair by pair, with a count on
+// every face: src/shadow/segment_arrangement.h). Sun-hours (issue 19, docs/sun-hours.md)
+// overlays the shadows of the time steps this way, so that every part of a face carries
+// its sunlit duration.
 
 #include <cstddef>
 #include <vector>

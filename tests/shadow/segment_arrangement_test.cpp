@@ -1,0 +1,197 @@
+// The pairwise arrangement of segments (src/shadow/segment_arrangement.h) against two
+// independent computations: CGAL's sweep (CGAL::insert into an Arrangement_2) must find the
+// same numbers of vertices, edges and faces; and at random rational points, the region
+// read back for a count must hold exactly the points that this many of the overlaid
+// regions hold, each region tested on its own. Regions are unions of random triangles and
+// squares less holes, with corners on a half-unit grid (shared corners, shared and
+// overlapping edges, corners on edges, touching components everywhere), at multiples of
+// 1/97 (crossings of large denominators, components inside holes), or on the grid in small
+// cells (components apart, placed by rays that meet other components' corners).
+
+#include <boost/test/unit_test.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+
+#include "penumbra/geometry/exact.h"
+#include "region_set.h"
+#include "segment_arrangement.h"
+#include "shadow_support.h"
+
+using namespace penumbra;
+using namespace penumbra::test;
+
+namespace {
+
+// The window's weight: far above any number of regions, so that a count below it lies
+// outside the window.
+constexpr long kWindow = 1L << 20;
+
+Ring2 square(int x0, int y0, int x1, int y1) {
+  return {Point2(x0, y0), Point2(x1, y0), Point2(x1, y1), Point2(x0, y1)};
+}
+
+// a corner in [0, 8]^2: on the half-unit grid (mode 0), at a multiple of 1/97 (mode 1), or
+// on the half-unit grid in the square [0, 2]^2 at cell (mode 2: small regions, many apart,
+// many of their corners at the height of another's).
+Point2 corner(std::mt19937& random, int mode, const Point2& cell) {
+  if (mode != 1) {
+    std::uniform_int_distribution<int> grid(0, mode == 0 ? 16 : 4);
+    const int x = grid(random);
+    return Point2(cell.x() + x / 2.0, cell.y() + grid(random) / 2.0);
+  }
+  std::uniform_int_distribution<int> fine(0, 8 * 97);
+  Rational x(fine(random), 97), y(fine(random), 97);
+  x.canonicalize();  // GMP's operands must be in lowest terms
+  y.canonicalize();
+  return from_exact<Point2>(RationalPoint2(x, y));
+}
+
+// a region: the union of one to three random triangles, less a random square half the
+// time (holes, and pieces touching at corners).
+Region2 random_region(std::mt19937& random, int mode) {
+  std::vector<Ring2> triangles;
+  const int count = std::uniform_int_distribution<int>(1, 3)(random);
+  std::uniform_int_distribution<int> at(0, 6);
+  const Point2 cell = mode == 2 ? Point2(at(random), at(random)) : Point2(0, 0);
+  while (static_cast<int>(triangles.size()) < count) {
+    Ring2 ring{corner(random, mode, cell), corner(random, mode, cell), corner(random, mode, cell)};
+    const CGAL::Orientation turn = CGAL::orientation(ring[0], ring[1], ring[2]);
+    if (turn == CGAL::COLLINEAR) continue;
+    if (turn == CGAL::CLOCKWISE) std::swap(ring[1], ring[2]);
+    triangles.push_back(std::move(ring));
+  }
+  std::vector<Ring2> subtract;
+  if (mode != 2 && std::uniform_int_distribution<int>(0, 1)(random) == 1) {
+    const int x = at(random), y = at(random);
+    subtract.push_back(square(x, y, x + 2, y + 2));
+  }
+  return detail::unite_minus(triangles, subtract);
+}
+
+std::vector<detail::LayerSegment> segments_of(const Polygon2& window,
+                                              const std::vector<Region2>& regions) {
+  std::vector<detail::LayerSegment> segments;
+  const auto add = [&](const Ring2& ring, long weight) {
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      segments.push_back({ring[i], ring[(i + 1) % ring.size()], weight});
+  };
+  add(window.outer, kWindow);
+  for (const Region2& region : regions)
+    for (const Polygon2& polygon : region.polygons) {
+      add(polygon.outer, 1);
+      for (const Ring2& hole : polygon.holes) add(hole, 1);
+    }
+  return segments;
+}
+
+// checks the arrangement of the window's and the regions' segments against CGAL's sweep
+// and against counting at random points.
+void check(const Polygon2& window, const std::vector<Region2>& regions, std::mt19937& random) {
+  const std::vector<detail::LayerSegment> segments = segments_of(window, regions);
+  const detail::SegmentArrangement arrangement = detail::arrange(segments);
+
+  // The same map as CGAL's sweep: vertices, edges and faces (the unbounded one included).
+  using Arrangement = CGAL::Arrangement_2<CGAL::Arr_segment_traits_2<Kernel>>;
+  Arrangement reference;
+  std::vector<Arrangement::X_monotone_curve_2> curves;
+  for (const detail::LayerSegment& s : segments) curves.emplace_back(s.a, s.b);
+  CGAL::insert(reference, curves.begin(), curves.end());
+  BOOST_TEST(arrangement.points.size() == reference.number_of_vertices());
+  BOOST_TEST(arrangement.origin.size() / 2 == reference.number_of_edges());
+  BOOST_TEST(arrangement.faces == reference.number_of_faces());
+
+  // Crossing an edge from the left of 2e to its right takes its left count off, whichever
+  // path the counts spread along.
+  std::size_t inconsistent = 0;
+  for (std::size_t h = 0; h < arrangement.origin.size(); h += 2)
+    inconsistent += arrangement.count[arrangement.face[h + 1]] !=
+                    arrangement.count[arrangement.face[h]] - arrangement.left[h / 2];
+  BOOST_TEST(inconsistent == 0u);
+
+  // Each count's region, read back, holds the points that many regions hold; together they
+  // tile the window.
+  std::vector<std::pair<long, Region2>> parts;
+  for (auto& [count, polygons] : detail::polygons_by_count(
+           arrangement, [](long count) { return count >= kWindow ? count - kWindow : -1; }))
+    parts.emplace_back(count, canonical_region(std::move(polygons)));
+  Exact total = 0;
+  for (const auto& part : parts) total += part.second.area;
+  BOOST_TEST((total == canonical_region({window}).area));
+  std::size_t compared = 0;
+  for (int s = 0; s < 100; ++s) {
+    const Point2 p(Exact(std::uniform_int_distribution<int>(1, 8 * 991 - 1)(random)) / 991,
+                   Exact(std::uniform_int_distribution<int>(1, 8 * 991 - 1)(random)) / 991);
+    long expected = 0;
+    bool on_boundary = false;
+    for (const Region2& region : regions) {
+      const Where where = locate(region, p);
+      on_boundary = on_boundary || where == Where::boundary;
+      expected += where == Where::inside;
+    }
+    if (on_boundary) continue;
+    std::size_t holding = 0;
+    for (const auto& [count, region] : parts)
+      if (locate(region, p) == Where::inside) {
+        ++holding;
+        BOOST_TEST(count == expected);
+      }
+    BOOST_TEST(holding == 1u);
+    ++compared;
+  }
+  BOOST_TEST(compared > 80u);
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(segment_arrangement)
+
+BOOST_AUTO_TEST_CASE(random_regions_give_cgals_map_and_the_counted_regions) {
+  const Polygon2 window{canonical_ring(square(0, 0, 8, 8)), {}};
+  std::mt19937 random(20261207);
+  for (int trial = 0; trial < 240; ++trial) {
+    const int mode = trial % 3;
+    std::vector<Region2> regions;
+    const int count = std::uniform_int_distribution<int>(1, 10)(random);
+    while (static_cast<int>(regions.size()) < count)
+      if (Region2 region = random_region(random, mode); !region.empty())
+        regions.push_back(std::move(region));
+    BOOST_TEST_CONTEXT("trial " << trial) {
+      check(window, regions, random);
+    }
+  }
+}
+
+// Components apart, one inside another's hole: each is placed by a ray to its left, and the
+// counts derived by hand. Window [0, 10]^2 (count 0); a ring [2, 8]^2 less [3, 7]^2 (count 1,
+// area 36 - 16 = 20); an island [4, 6]^2 in its hole (count 1, area 4); a square [8, 9] x
+// [0, 1] below and right of the ring, apart from it (count 1, area 1). Count 0 is the rest:
+// 100 - 25.
+BOOST_AUTO_TEST_CASE(an_island_in_a_hole_has_the_count_derived_by_hand) {
+  const Polygon2 window{canonical_ring(square(0, 0, 10, 10)), {}};
+  Ring2 hole = square(3, 3, 7, 7);
+  std::reverse(hole.begin(), hole.end());
+  const std::vector<Region2> regions{
+      canonical_region({Polygon2{canonical_ring(square(2, 2, 8, 8)), {canonical_ring(hole)}}}),
+      canonical_region({Polygon2{canonical_ring(square(4, 4, 6, 6)), {}}}),
+      canonical_region({Polygon2{canonical_ring(square(8, 0, 9, 1)), {}}})};
+  const detail::SegmentArrangement arrangement = detail::arrange(segments_of(window, regions));
+  // Faces: the unbounded one, the window less the rest, the ring, the hole less the island,
+  // the island, the small square.
+  BOOST_TEST(arrangement.faces == 6u);
+  std::map<long, Exact> area;
+  for (auto& [count, polygons] : detail::polygons_by_count(
+           arrangement, [](long count) { return count >= kWindow ? count - kWindow : -1; }))
+    area[count] = canonical_region(std::move(polygons)).area;
+  BOOST_TEST_REQUIRE(area.size() == 2u);
+  BOOST_TEST((area[1] == Exact(20 + 4 + 1)));
+  BOOST_TEST((area[0] == Exact(100 - 25)));
+  std::mt19937 random(7);
+  check(window, regions, random);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
