@@ -1,6 +1,7 @@
 #include "face_json.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "penumbra/base/parallel.h"
@@ -28,13 +29,33 @@ void emit_point(JsonEmitter& out, const RationalPoint3& p) {
   for (int i = 0; i < 3; ++i) out.number(rounded(p[i]));
   out.end_array();
 }
-void emit_point(JsonEmitter& out, const Point3& p) {
-  // A point given as doubles is its own rounding (most vertices of a scene are).
+namespace {
+
+// returns p's coordinates rounded: a point given as doubles is its own rounding (most
+// vertices of a scene are).
+std::array<double, 3> rounded_point(const Point3& p) {
   const auto& approx = p.approx();
-  if (!approx.x().is_point() || !approx.y().is_point() || !approx.z().is_point())
-    return emit_point(out, exact_value(p));
+  if (!approx.x().is_point() || !approx.y().is_point() || !approx.z().is_point()) {
+    const RationalPoint3& exact = exact_value(p);
+    return {rounded(exact.x()), rounded(exact.y()), rounded(exact.z())};
+  }
+  return {approx.x().inf() + 0.0, approx.y().inf() + 0.0, approx.z().inf() + 0.0};
+}
+
+// returns the vertex of the face's outer ring at frame point p, if p is one.
+const Point3* face_vertex(const FaceOutput& output, const Point2& p) {
+  const auto vertex = std::find_if(output.ring.begin(), output.ring.end(), [&](const Point2& q) {
+    return CGAL::identical(p, q) || same_point(p, q);
+  });
+  if (vertex == output.ring.end()) return nullptr;
+  return &output.face.outer[static_cast<std::size_t>(vertex - output.ring.begin())];
+}
+
+}  // namespace
+
+void emit_point(JsonEmitter& out, const Point3& p) {
   out.begin_array();
-  for (int i = 0; i < 3; ++i) out.number(approx[i].inf() + 0.0);
+  for (const double x : rounded_point(p)) out.number(x);
   out.end_array();
 }
 void emit_exact_point(JsonEmitter& out, const RationalPoint3& p) {
@@ -69,6 +90,11 @@ void round_points(FaceOutput& output, const std::vector<const Point2*>& points) 
   for_each_index(
       points.size(), points.size() > 256,
       [&](std::size_t k) {
+        // A face vertex as it is (the face may not hold it exactly in its plane).
+        if (const Point3* vertex = face_vertex(output, *points[k])) {
+          output.rounded[k] = rounded_point(*vertex);
+          return;
+        }
         const RationalPoint3 world = output.face.frame.to_world(exact_value(*points[k]));
         for (int i = 0; i < 3; ++i) output.rounded[k][i] = rounded(world[i]);
       },
@@ -81,17 +107,7 @@ void emit_ring(JsonEmitter& out, const Ring2& ring, const FaceOutput& output, bo
   const ReceivingFace& face = output.face;
   out.begin_array();
   for (const Point2& p : ring) {
-    const auto vertex = std::find_if(output.ring.begin(), output.ring.end(), [&](const Point2& q) {
-      return CGAL::identical(p, q) || same_point(p, q);
-    });
-    if (vertex != output.ring.end()) {
-      const Point3& world = face.outer[static_cast<std::size_t>(vertex - output.ring.begin())];
-      if (exact)
-        emit_exact_point(out, exact_value(world));
-      else
-        emit_point(out, world);
-      continue;
-    }
+    // A point computed ahead (face vertices as they are).
     if (!exact) {
       if (const auto known = output.world.find(p.id()); known != output.world.end()) {
         out.begin_array();
@@ -99,6 +115,13 @@ void emit_ring(JsonEmitter& out, const Ring2& ring, const FaceOutput& output, bo
         out.end_array();
         continue;
       }
+    }
+    if (const Point3* vertex = face_vertex(output, p)) {
+      if (exact)
+        emit_exact_point(out, exact_value(*vertex));
+      else
+        emit_point(out, *vertex);
+      continue;
     }
     const RationalPoint3 world = face.frame.to_world(exact_value(p));
     if (exact)

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <tbb/parallel_sort.h>
+
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
 #include "penumbra/geometry/exact_sum.h"
@@ -30,16 +32,19 @@ Rational twice_signed_area(const Ring2& ring) {
   return twice;
 }
 
-// adds to sum and bound what encloses 2^(2 kEnclosureBits) times twice the signed area of
-// ring, in integers: |2^(2k) twice - sum| <= bound. With each coordinate written
+// adds to sum and bound what encloses 2^(2 kEnclosureBits) times the part of twice the
+// signed area of ring that its edges from corner from to corner to (mod its size) make,
+// in integers: |2^(2k) twice - sum| <= bound. With each coordinate written
 // x = (X + a) 2^-k, X = floor(x 2^k), 0 <= a < 1, a shoelace term x_i y_j - x_j y_i is 2^-2k
 // times X_i Y_j - X_j Y_i plus X_i b_j + a_i Y_j + a_i b_j - X_j b_i - a_j Y_i - a_j b_i, whose
 // size is below |X_i| + |Y_j| + 1 + |X_j| + |Y_i| + 1, less what a zero a or b leaves out
 // (coordinates on the grid, such as doubles, add nothing).
-void add_twice_area(const Ring2& ring, mpz_class& sum, mpz_class& bound) {
-  std::vector<Enclosure> x, y;  // X = x.lower
-  for (const Point2& p : ring) {
-    const RationalPoint2& exact = exact_value(p);
+void add_twice_area(const Ring2& ring, std::size_t from, std::size_t to, mpz_class& sum,
+                    mpz_class& bound) {
+  const std::size_t n = ring.size();
+  std::vector<Enclosure> x, y;  // X = x.lower, for the corners from to to + 1 (mod n)
+  for (std::size_t i = from; i <= to; ++i) {
+    const RationalPoint2& exact = exact_value(ring[i % n]);
     x.push_back(Enclosure::of(exact.x()));
     y.push_back(Enclosure::of(exact.y()));
   }
@@ -51,19 +56,43 @@ void add_twice_area(const Ring2& ring, mpz_class& sum, mpz_class& bound) {
     if (!xi.exact() && !yj.exact()) e += 1;
     return e;
   };
-  const std::size_t n = ring.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t j = (i + 1) % n;
-    sum += x[i].lower * y[j].lower - x[j].lower * y[i].lower;
-    bound += error(x[i], y[j]) + error(x[j], y[i]);
+  for (std::size_t i = 0; i < to - from; ++i) {
+    sum += x[i].lower * y[i + 1].lower - x[i + 1].lower * y[i].lower;
+    bound += error(x[i], y[i + 1]) + error(x[i + 1], y[i]);
   }
 }
 
+// The edges of a polygon's rings in runs of at most this many, summed across threads: the
+// ground of a city is a few polygons with up to 10^5 corners.
+constexpr std::size_t kEdgesPerRun = 4096;
+
 // returns an enclosure of the area of polygon (outer ring and holes).
 Enclosure area_enclosure(const Polygon2& polygon) {
+  struct Run {
+    const Ring2* ring;
+    std::size_t from, to;  // edges from corner from to corner to (mod its size)
+    mpz_class sum = 0, bound = 0;
+  };
+  std::vector<Run> runs;
+  std::size_t edges = 0;
+  const auto add = [&](const Ring2& ring) {
+    edges += ring.size();
+    for (std::size_t from = 0; from < ring.size(); from += kEdgesPerRun)
+      runs.push_back({&ring, from, std::min(ring.size(), from + kEdgesPerRun)});
+  };
+  add(polygon.outer);
+  for (const Ring2& hole : polygon.holes) add(hole);
+  for_each_index(
+      runs.size(), edges > kEdgesPerRun,
+      [&](std::size_t k) {
+        add_twice_area(*runs[k].ring, runs[k].from, runs[k].to, runs[k].sum, runs[k].bound);
+      },
+      4);
   mpz_class sum = 0, bound = 0;
-  add_twice_area(polygon.outer, sum, bound);
-  for (const Ring2& hole : polygon.holes) add_twice_area(hole, sum, bound);
+  for (const Run& run : runs) {
+    sum += run.sum;
+    bound += run.bound;
+  }
   // area 2^k = (twice 2^2k) / 2^(k + 1).
   Enclosure area;
   mpz_class end = sum - bound;
@@ -139,8 +168,9 @@ Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> ar
         std::sort(polygons[k].holes.begin(), polygons[k].holes.end(), ring_less);
       },
       16);
-  std::sort(polygons.begin(), polygons.end(),
-            [](const Polygon2& a, const Polygon2& b) { return ring_less(a.outer, b.outer); });
+  tbb::parallel_sort(polygons.begin(), polygons.end(), [](const Polygon2& a, const Polygon2& b) {
+    return ring_less(a.outer, b.outer);
+  });
   if (area) {
     region.area = std::move(*area);
   } else if (!polygons.empty()) {

@@ -39,26 +39,26 @@ std::size_t hash_of(const RationalPoint2& p) {
   return hash_of(p.y().get_den(), h);
 }
 
-// returns for each point the index of the first point equal to it (exactly), and the
-// distinct points' indices in order of first appearance.
-std::vector<std::size_t> first_equal(const std::vector<RationalPoint2>& points) {
-  std::vector<std::size_t> hashes(points.size());
+// returns for each of the points at(0), ..., at(count - 1) the index of the first point
+// equal to it (exactly).
+template <typename At>
+std::vector<std::size_t> first_equal(std::size_t count, const At& at) {
+  std::vector<std::size_t> hashes(count);
   for_each_index(
-      points.size(), points.size() > 4096, [&](std::size_t k) { hashes[k] = hash_of(points[k]); },
-      256);
-  std::vector<std::size_t> order(points.size());
+      count, count > 4096, [&](std::size_t k) { hashes[k] = hash_of(at(k)); }, 256);
+  std::vector<std::size_t> order(count);
   std::iota(order.begin(), order.end(), 0);
   tbb::parallel_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return hashes[a] != hashes[b] ? hashes[a] < hashes[b] : a < b;
   });
-  std::vector<std::size_t> first(points.size());
+  std::vector<std::size_t> first(count);
   for (std::size_t i = 0; i < order.size();) {
     std::size_t j = i;
     while (j < order.size() && hashes[order[j]] == hashes[order[i]]) ++j;
     for (std::size_t k = i; k < j; ++k) {
       first[order[k]] = order[k];
       for (std::size_t m = i; m < k; ++m)
-        if (first[order[m]] == order[m] && points[order[m]] == points[order[k]]) {
+        if (first[order[m]] == order[m] && at(order[m]) == at(order[k])) {
           first[order[k]] = order[m];
           break;
         }
@@ -195,17 +195,22 @@ bool before(const Direction& u, const Direction& v) {
 // an outer boundary (every loop of it counter-clockwise, the sum positive) or a hole
 // (every loop clockwise), even where it touches itself.
 int area_sign(const std::size_t* first, const std::size_t* last,
-              const std::vector<RationalPoint2>& points) {
+              const SegmentArrangement& arrangement) {
+  const std::vector<RationalPoint2>& points = arrangement.points;
   const std::size_t n = static_cast<std::size_t>(last - first);
   const RationalPoint2& o = points[*first];
   {
-    std::vector<IntervalPoint> at(n);  // made before rounding upward
-    for (std::size_t i = 0; i < n; ++i) at[i] = interval_of(points[first[i]]);
+    const auto at = [&](std::size_t i) {
+      const CGAL::Bbox_2& box = arrangement.boxes[first[i]];
+      return IntervalPoint{Interval(box.xmin(), box.xmax()), Interval(box.ymin(), box.ymax())};
+    };
     CGAL::Protect_FPU_rounding<true> upward;
+    const IntervalPoint p0 = at(0);
     Interval sum = 0;
-    for (std::size_t i = 1; i + 1 < n; ++i)
-      sum += (at[i].x - at[0].x) * (at[i + 1].y - at[0].y) -
-             (at[i + 1].x - at[0].x) * (at[i].y - at[0].y);
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      const IntervalPoint p = at(i), q = at(i + 1);
+      sum += (p.x - p0.x) * (q.y - p0.y) - (q.x - p0.x) * (p.y - p0.y);
+    }
     const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(sum);
     if (CGAL::is_certain(sign)) return static_cast<int>(sign.make_certain());
   }
@@ -215,6 +220,28 @@ int area_sign(const std::size_t* first, const std::size_t* last,
     sum += (p.x() - o.x()) * (q.y() - o.y()) - (q.x() - o.x()) * (p.y() - o.y());
   }
   return sgn(sum);
+}
+
+// Items grouped by a key, each group's items in increasing order, in one array (a vector of
+// vectors would allocate for each of millions of vertices and faces).
+struct Groups {
+  std::vector<std::size_t> start, items;  // group k: items[start[k]] to items[start[k + 1]]
+  std::size_t* begin(std::size_t k) { return items.data() + start[k]; }
+  std::size_t* end(std::size_t k) { return items.data() + start[k + 1]; }
+  std::size_t size(std::size_t k) const { return start[k + 1] - start[k]; }
+};
+
+// returns the items 0 to count - 1 grouped by key(item), a key below keys.
+template <typename Key>
+Groups group_by(std::size_t count, std::size_t keys, const Key& key) {
+  Groups groups;
+  groups.start.assign(keys + 1, 0);
+  for (std::size_t i = 0; i < count; ++i) ++groups.start[key(i) + 1];
+  for (std::size_t k = 0; k < keys; ++k) groups.start[k + 1] += groups.start[k];
+  groups.items.resize(count);
+  std::vector<std::size_t> at(groups.start.begin(), groups.start.end() - 1);
+  for (std::size_t i = 0; i < count; ++i) groups.items[at[key(i)]++] = i;
+  return groups;
 }
 
 // ---- union-find ---------------------------------------------------------------------
@@ -242,9 +269,11 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     raw.push_back(exact_value(s.a));
     raw.push_back(exact_value(s.b));
   }
-  std::vector<std::size_t> first = first_equal(raw);
+  std::vector<std::size_t> first =
+      first_equal(raw.size(), [&](std::size_t k) -> const RationalPoint2& { return raw[k]; });
   std::vector<std::size_t> vertex_of(raw.size());
   std::vector<RationalPoint2>& points = result.points;
+  points.reserve(raw.size());
   for (std::size_t k = 0; k < raw.size(); ++k) {
     if (first[k] == k) {
       vertex_of[k] = points.size();
@@ -310,82 +339,93 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& p, const Box& q) {
     pairs.emplace_back(p.handle(), q.handle());
   });
-  // What a pair gives: a corner of one inside the other (by vertex) or a crossing (a new point).
+  // What the pairs give: corners of one segment inside the other (by vertex), and crossings
+  // (new points, with their pairs). The pairs run in chunks across threads, each chunk's
+  // findings in pair order, so that the numbering below does not depend on the threads.
   struct Split {
     std::size_t segment;
-    std::size_t vertex;  // a vertex, or raw crossing index + points.size() before crossings
+    std::size_t vertex;
   };
-  std::vector<std::vector<Split>> splits_of(pairs.size());
-  std::vector<std::optional<RationalPoint2>> crossing_of(pairs.size());
+  struct Crossing {
+    std::size_t pair;
+    RationalPoint2 point;
+  };
+  struct Findings {
+    std::vector<Split> splits;
+    std::vector<Crossing> crossings;
+  };
+  constexpr std::size_t kPairsPerChunk = 4096;
+  std::vector<Findings> found((pairs.size() + kPairsPerChunk - 1) / kPairsPerChunk);
   const auto inside = [&](std::size_t v, const Seg& s) {  // v on s's line: strictly inside s?
     return v != s.a && v != s.b && less(s.a, v) && less(v, s.b);
   };
+  const auto classify = [&](std::size_t k, Findings& out) {
+    const std::size_t i = pairs[k].first, j = pairs[k].second;
+    const Seg &s = segs[i], &t = segs[j];
+    if (s.line == t.line) {  // collinear: the corners of each strictly inside the other
+      for (std::size_t v : {t.a, t.b})
+        if (inside(v, s)) out.splits.push_back({i, v});
+      for (std::size_t v : {s.a, s.b})
+        if (inside(v, t)) out.splits.push_back({j, v});
+      return;
+    }
+    const auto on = [&](std::size_t v, const Seg& r) {
+      return (v == r.a || v == r.b)
+                 ? 0
+                 : side(lines[r.line], line_approx[r.line], points[v], approx[v]);
+    };
+    const int o1 = on(t.a, s), o2 = on(t.b, s);
+    if (o1 == o2 && o1 != 0) return;
+    const int o3 = on(s.a, t), o4 = on(s.b, t);
+    if (o3 == o4 && o3 != 0) return;
+    if (o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0) {
+      // A proper crossing: Cramer's rule on the two integer lines.
+      const Line &l = lines[s.line], &m = lines[t.line];
+      const mpz_class d = l.a * m.b - m.a * l.b;
+      Rational x(l.b * m.c - m.b * l.c, d), y(m.a * l.c - l.a * m.c, d);
+      x.canonicalize();
+      y.canonicalize();
+      out.crossings.push_back({k, RationalPoint2(x, y)});
+      return;
+    }
+    // Lines apart: the one common point of the lines, if it is a corner of one lying
+    // inside the other.
+    if (o1 == 0 && inside(t.a, s)) out.splits.push_back({i, t.a});
+    if (o2 == 0 && inside(t.b, s)) out.splits.push_back({i, t.b});
+    if (o3 == 0 && inside(s.a, t)) out.splits.push_back({j, s.a});
+    if (o4 == 0 && inside(s.b, t)) out.splits.push_back({j, s.b});
+  };
   for_each_index(
-      pairs.size(), pairs.size() > 1024,
-      [&](std::size_t k) {
-        const std::size_t i = pairs[k].first, j = pairs[k].second;
-        const Seg &s = segs[i], &t = segs[j];
-        std::vector<Split>& out = splits_of[k];
-        if (s.line == t.line) {  // collinear: the corners of each strictly inside the other
-          for (std::size_t v : {t.a, t.b})
-            if (inside(v, s)) out.push_back({i, v});
-          for (std::size_t v : {s.a, s.b})
-            if (inside(v, t)) out.push_back({j, v});
-          return;
-        }
-        const auto on = [&](std::size_t v, const Seg& r) {
-          return (v == r.a || v == r.b)
-                     ? 0
-                     : side(lines[r.line], line_approx[r.line], points[v], approx[v]);
-        };
-        const int o1 = on(t.a, s), o2 = on(t.b, s);
-        if (o1 == o2 && o1 != 0) return;
-        const int o3 = on(s.a, t), o4 = on(s.b, t);
-        if (o3 == o4 && o3 != 0) return;
-        if (o1 != 0 && o2 != 0 && o3 != 0 && o4 != 0) {
-          // A proper crossing: Cramer's rule on the two integer lines.
-          const Line &l = lines[s.line], &m = lines[t.line];
-          const mpz_class d = l.a * m.b - m.a * l.b;
-          Rational x(l.b * m.c - m.b * l.c, d), y(m.a * l.c - l.a * m.c, d);
-          x.canonicalize();
-          y.canonicalize();
-          crossing_of[k] = RationalPoint2(x, y);
-          return;
-        }
-        // Lines apart: the one common point of the lines, if it is a corner of one lying
-        // inside the other.
-        if (o1 == 0 && inside(t.a, s)) out.push_back({i, t.a});
-        if (o2 == 0 && inside(t.b, s)) out.push_back({i, t.b});
-        if (o3 == 0 && inside(s.a, t)) out.push_back({j, s.a});
-        if (o4 == 0 && inside(s.b, t)) out.push_back({j, s.b});
+      found.size(), found.size() > 1,
+      [&](std::size_t c) {
+        const std::size_t end = std::min(pairs.size(), (c + 1) * kPairsPerChunk);
+        for (std::size_t k = c * kPairsPerChunk; k < end; ++k) classify(k, found[c]);
       },
-      256);
+      1);
 
-  // Crossings numbered with the corners by their exact values.
+  // Crossings numbered with the corners by their exact values (corners are distinct
+  // already); the points vector grows once, since moving a rational may copy it.
   const std::size_t corners = points.size();
-  std::vector<std::size_t> crossing_vertex(pairs.size(), SIZE_MAX);
-  {
-    std::vector<RationalPoint2> all(points);
-    std::vector<std::size_t> pair_of;
-    for (std::size_t k = 0; k < pairs.size(); ++k)
-      if (crossing_of[k]) {
-        pair_of.push_back(k);
-        all.push_back(std::move(*crossing_of[k]));
-      }
-    crossing_of.clear();
-    crossing_of.shrink_to_fit();
-    const std::vector<std::size_t> same = first_equal(all);
-    std::vector<std::size_t> id(all.size());
-    for (std::size_t k = 0; k < all.size(); ++k) {
-      if (k < corners) {
-        id[k] = k;  // corners are distinct already
-      } else if (same[k] == k) {
-        id[k] = points.size();
-        points.push_back(std::move(all[k]));
-      } else {
-        id[k] = id[same[k]];
-      }
-      if (k >= corners) crossing_vertex[pair_of[k - corners]] = id[k];
+  std::vector<Crossing*> crossings;
+  for (Findings& f : found)
+    for (Crossing& crossing : f.crossings) crossings.push_back(&crossing);
+  const std::vector<std::size_t> same =
+      first_equal(corners + crossings.size(), [&](std::size_t k) -> const RationalPoint2& {
+        return k < corners ? points[k] : crossings[k - corners]->point;
+      });
+  std::vector<std::size_t> crossing_vertex(crossings.size());
+  std::size_t distinct = 0;
+  for (std::size_t k = 0; k < crossings.size(); ++k) distinct += same[corners + k] == corners + k;
+  points.reserve(corners + distinct);
+  for (std::size_t k = 0; k < crossings.size(); ++k) {
+    const std::size_t earliest = same[corners + k];
+    if (earliest < corners) {
+      crossing_vertex[k] = earliest;
+    } else if (earliest == corners + k) {
+      crossing_vertex[k] = points.size();
+      points.push_back(std::move(crossings[k]->point));
+    } else {
+      crossing_vertex[k] = crossing_vertex[earliest - corners];
     }
   }
 
@@ -396,13 +436,15 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   // Each segment's vertices in order, consecutive ones the edges.
   std::vector<std::vector<std::size_t>> on_segment(n);
   for (std::size_t k = 0; k < n; ++k) on_segment[k] = {segs[k].a, segs[k].b};
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    for (const Split& split : splits_of[k]) on_segment[split.segment].push_back(split.vertex);
-    if (crossing_vertex[k] != SIZE_MAX) {
-      on_segment[pairs[k].first].push_back(crossing_vertex[k]);
-      on_segment[pairs[k].second].push_back(crossing_vertex[k]);
-    }
+  for (const Findings& f : found)
+    for (const Split& split : f.splits) on_segment[split.segment].push_back(split.vertex);
+  for (std::size_t k = 0; k < crossings.size(); ++k) {
+    const std::pair<std::size_t, std::size_t>& pair = pairs[crossings[k]->pair];
+    on_segment[pair.first].push_back(crossing_vertex[k]);
+    on_segment[pair.second].push_back(crossing_vertex[k]);
   }
+  found.clear();
+  found.shrink_to_fit();
   for_each_index(
       n, n > 1024,
       [&](std::size_t k) {
@@ -455,17 +497,16 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     const int rightward = (dx > 0 || (dx == 0 && dy > 0)) ? 1 : -1;
     return Direction{&line, (h % 2 == 0) ? rightward : -rightward};
   };
-  std::vector<std::vector<std::size_t>> around(points.size());
-  for (std::size_t h = 0; h < 2 * edges; ++h) around[origin[h]].push_back(h);
+  Groups around = group_by(2 * edges, points.size(), [&](std::size_t h) { return origin[h]; });
   result.next.assign(2 * edges, 0);
   for_each_index(
       points.size(), points.size() > 1024,
       [&](std::size_t v) {
-        std::vector<std::size_t>& list = around[v];
-        std::sort(list.begin(), list.end(), [&](std::size_t g, std::size_t h) {
+        std::size_t* list = around.begin(v);
+        std::sort(list, around.end(v), [&](std::size_t g, std::size_t h) {
           return g != h && before(direction(g), direction(h));
         });
-        const std::size_t m = list.size();
+        const std::size_t m = around.size(v);
         for (std::size_t i = 0; i < m; ++i) result.next[list[i] ^ 1] = list[(i + m - 1) % m];
       },
       64);
@@ -483,7 +524,7 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   for (std::size_t e = 0; e < edges; ++e) component.join(origin[2 * e], origin[2 * e + 1]);
   std::map<std::size_t, std::size_t> lowest;  // component root -> its smallest vertex
   for (std::size_t v = 0; v < points.size(); ++v) {
-    if (around[v].empty()) continue;
+    if (around.size(v) == 0) continue;
     auto [it, added] = lowest.emplace(component.root(v), v);
     if (!added && less(v, it->second)) it->second = v;
   }
@@ -519,8 +560,9 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
       for (std::size_t k = bottom; k <= top; ++k) in_band[k].push_back(e);
     }
   for (const auto& [root, v] : lowest) {
-    std::size_t outer = around[v].front();
-    for (std::size_t h : around[v]) {
+    std::size_t outer = *around.begin(v);
+    for (const std::size_t* at = around.begin(v); at != around.end(v); ++at) {
+      const std::size_t h = *at;
       const Direction d = direction(h), best = direction(outer);
       const bool vertical = d.dx() == 0;
       if (best.dx() != 0 && (vertical || cross_sign(best, d) > 0)) outer = h;
@@ -592,8 +634,8 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     if (number[faces.root(c)] == SIZE_MAX) number[faces.root(c)] = result.faces++;
   result.face.resize(2 * edges);
   for (std::size_t h = 0; h < 2 * edges; ++h) result.face[h] = number[faces.root(cycle[h])];
-  std::vector<std::vector<std::size_t>> halfedges_of(result.faces);
-  for (std::size_t h = 0; h < 2 * edges; ++h) halfedges_of[result.face[h]].push_back(h);
+  Groups halfedges_of =
+      group_by(2 * edges, result.faces, [&](std::size_t h) { return result.face[h]; });
   result.count.assign(result.faces, 0);
   std::vector<bool> reached(result.faces, false);
   reached[0] = true;
@@ -601,7 +643,8 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   while (!queue.empty()) {
     const std::size_t f = queue.back();
     queue.pop_back();
-    for (std::size_t h : halfedges_of[f]) {
+    for (const std::size_t* at = halfedges_of.begin(f); at != halfedges_of.end(f); ++at) {
+      const std::size_t h = *at;
       const std::size_t g = result.face[h ^ 1];
       if (reached[g]) continue;
       reached[g] = true;
@@ -610,6 +653,14 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
       queue.push_back(g);
     }
   }
+  result.boxes.resize(points.size());
+  for_each_index(
+      points.size(), points.size() > 4096,
+      [&](std::size_t v) {
+        result.boxes[v] = CGAL::Bbox_2(approx[v].x.inf(), approx[v].y.inf(), approx[v].x.sup(),
+                                       approx[v].y.sup());
+      },
+      256);
   return result;
 }
 
@@ -627,10 +678,6 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
     const long k = keys[arrangement.face[h]];
     return k >= 0 && k != keys[arrangement.face[h ^ 1]];
   };
-  std::vector<Point2> points(arrangement.points.size());
-  for_each_index(points.size(), points.size() > 4096, [&](std::size_t v) {
-    points[v] = point_from<Point2>(RationalPoint2(arrangement.points[v]));
-  });
   // The rings traced (vertex numbers only), one after another.
   std::vector<std::size_t> ring_vertices, ring_start{0}, ring_face;
   std::vector<bool> traced(halfedges, false);
@@ -647,6 +694,16 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
     ring_start.push_back(ring_vertices.size());
     ring_face.push_back(sets.root(arrangement.face[h]));
   }
+  // The points of the vertices on them, made once each, across threads.
+  std::vector<char> used(arrangement.points.size(), 0);
+  for (const std::size_t v : ring_vertices) used[v] = 1;
+  std::vector<Point2> points(arrangement.points.size());
+  for_each_index(
+      points.size(), points.size() > 4096,
+      [&](std::size_t v) {
+        if (used[v]) points[v] = point_from<Point2>(RationalPoint2(arrangement.points[v]));
+      },
+      256);
   // Each made canonical and told outer boundary or hole, across threads: by the sign of its
   // area, since an orientation test at one corner (CGAL::orientation_2) is wrong at a
   // corner where the ring touches itself.
@@ -662,7 +719,7 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
         ring.reserve(static_cast<std::size_t>(last - first));
         for (const std::size_t* v = first; v != last; ++v) ring.push_back(points[*v]);
         canonical[r] = canonical_ring(ring);
-        if (!canonical[r].empty()) sign[r] = area_sign(first, last, arrangement.points);
+        if (!canonical[r].empty()) sign[r] = area_sign(first, last, arrangement);
       },
       16);
   std::vector<Polygon2> polygons(arrangement.faces);
@@ -677,7 +734,9 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
   std::map<long, std::vector<Polygon2>> by_key;
   for (std::size_t f = 0; f < arrangement.faces; ++f)
     if (!polygons[f].outer.empty()) by_key[keys[f]].push_back(std::move(polygons[f]));
-  return {by_key.begin(), by_key.end()};
+  std::vector<std::pair<long, std::vector<Polygon2>>> result;
+  for (auto& [key, list] : by_key) result.emplace_back(key, std::move(list));
+  return result;
 }
 
 }  // namespace penumbra::detail
