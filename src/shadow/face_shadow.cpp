@@ -64,11 +64,11 @@ FaceShadow unite_shadows(const Face& face, std::vector<OccluderShadow> occluders
     return result;
   }
   if (window && groups.size() == polygons.size()) {
-    if (auto lit = detail::convex_difference(*window, polygons)) {
+    if (auto difference = detail::convex_difference(*window, polygons)) {
       std::vector<Polygon2> parts;
       for (const Ring2& polygon : polygons) parts.push_back({canonical_ring(polygon), {}});
       result.shadow = canonical_region(std::move(parts));
-      result.lit = std::move(*lit);
+      result.lit = std::move(*difference);
       result.occluders = std::move(occluders);
       return result;
     }

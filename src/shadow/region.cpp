@@ -156,7 +156,22 @@ Ring2 canonical_ring(const Ring2& ring) {
     }
   }
   if (out.size() < 3) return {};
-  std::rotate(out.begin(), std::min_element(out.begin(), out.end(), point_less), out.end());
+  // Start at the smallest vertex; a ring that touches itself there passes it more than once,
+  // and then starts at the pass whose following vertices are smallest, so that the form
+  // does not depend on where the ring was traced from.
+  const std::size_t n = out.size();
+  std::size_t start =
+      static_cast<std::size_t>(std::min_element(out.begin(), out.end(), point_less) - out.begin());
+  for (std::size_t k = start + 1; k < n; ++k) {
+    if (!same_point(out[k], out[start])) continue;
+    for (std::size_t i = 1; i < n; ++i) {
+      const CGAL::Comparison_result c = CGAL::compare_xy(out[(k + i) % n], out[(start + i) % n]);
+      if (c == CGAL::EQUAL) continue;
+      if (c == CGAL::SMALLER) start = k;
+      break;
+    }
+  }
+  std::rotate(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(start), out.end());
   return out;
 }
 

@@ -189,6 +189,21 @@ BOOST_AUTO_TEST_CASE(collinear_contour_vertices_give_a_canonical_polygon) {
   BOOST_TEST(world_area_is(sunny.shadow, top, Exact(11) / 4));
 }
 
+// A ring that touches itself at its smallest vertex O = (0, 0): two counter-clockwise
+// loops, O (1, -2) (2, -1) and O (2, 1) (1, 2) (cross products 1 * -1 - -2 * 2 = 3 and
+// 2 * 2 - 1 * 1 = 3). Traced from either pass through O it is one canonical ring: the pass
+// followed by (1, -2), the smaller of (1, -2) and (2, 1).
+BOOST_AUTO_TEST_CASE(a_ring_touching_itself_at_its_smallest_vertex_starts_at_one_pass) {
+  const Point2 o(0, 0), a(1, -2), b(2, -1), c(2, 1), d(1, 2);
+  const Ring2 expected{o, a, b, o, c, d};
+  for (const Ring2& traced : {Ring2{o, a, b, o, c, d}, Ring2{o, c, d, o, a, b},
+                              Ring2{c, d, o, a, b, o}, Ring2{b, o, c, d, o, a}}) {
+    const Ring2 ring = canonical_ring(traced);
+    BOOST_TEST_REQUIRE(ring.size() == expected.size());
+    for (std::size_t k = 0; k < ring.size(); ++k) BOOST_TEST((ring[k] == expected[k]));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(light_inside_or_on_an_occluder_darkens_everything_else) {
   const Scene scene = load_scene(fixture("scenes/shadow-light-inside.json"));
   const ShadowResult result = shade(scene);

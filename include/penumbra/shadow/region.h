@@ -39,8 +39,9 @@ Exact signed_area(const Ring2& ring);
 CGAL::Sign area_sign(const Ring2& ring);
 
 // returns ring without repeated and collinear vertices, rotated to start at its
-// lexicographically smallest vertex (orientation kept). Empty when nothing with
-// area is left.
+// lexicographically smallest vertex (orientation kept); a ring that touches itself there
+// starts at the pass whose following vertices are lexicographically smallest. Empty when
+// nothing with area is left.
 Ring2 canonical_ring(const Ring2& ring);
 
 // sorts holes and polygons and fills area: the canonical form of a region whose
