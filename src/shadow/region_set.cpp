@@ -15,6 +15,7 @@
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
 #include "polygon_set_region.h"
+#include "segment_arrangement.h"
 
 namespace penumbra::detail {
 namespace {
@@ -199,7 +200,33 @@ Region2 union_of(const std::vector<Ring2>& rings,
 
 Region2 unite_groups(const std::vector<Ring2>& rings,
                      const std::vector<std::vector<std::size_t>>& groups) {
-  return union_of(rings, group_pieces(rings, groups));
+  if (rings.size() == 1) return convex_region(rings.front());
+  // Each group's union is where the pairwise arrangement of its rings' edges counts one
+  // ring or more (segment_arrangement.h: the rings are counter-clockwise, so each adds one
+  // on its left); the same faces a polygon set's union has.
+  std::vector<std::vector<Polygon2>> pieces(groups.size());
+  for_each_index(groups.size(), true, [&](std::size_t g) {
+    if (groups[g].size() == 1) {
+      if (Ring2 ring = canonical_ring(rings[groups[g].front()]); !ring.empty())
+        pieces[g].push_back({std::move(ring), {}});
+      return;
+    }
+    std::vector<LayerSegment> segments;
+    for (const std::size_t k : groups[g]) {
+      const Ring2 ring = canonical_ring(rings[k]);
+      for (std::size_t i = 0; i < ring.size(); ++i)
+        segments.push_back({ring[i], ring[(i + 1) % ring.size()], 1});
+    }
+    if (segments.empty()) return;
+    for (auto& [key, polygons] : polygons_by_count(
+             arrange(segments), [](long count) { return count > 0 ? 0L : -1L; },
+             TraceSide::outside))
+      pieces[g] = std::move(polygons);
+  });
+  std::vector<Polygon2> all;
+  for (std::vector<Polygon2>& group : pieces)
+    std::move(group.begin(), group.end(), std::back_inserter(all));
+  return canonical_region(std::move(all));
 }
 
 std::pair<Region2, Region2> unite_and_complement(

@@ -665,7 +665,8 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
 }
 
 std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
-    const SegmentArrangement& arrangement, const std::function<long(long)>& key_of) {
+    const SegmentArrangement& arrangement, const std::function<long(long)>& key_of,
+    TraceSide side) {
   const std::size_t halfedges = arrangement.origin.size();
   std::vector<long> keys(arrangement.faces);
   for (std::size_t f = 0; f < arrangement.faces; ++f) keys[f] = key_of(arrangement.count[f]);
@@ -674,26 +675,36 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
     const std::size_t a = arrangement.face[h], b = arrangement.face[h + 1];
     if (a != b && keys[a] >= 0 && keys[a] == keys[b]) sets.join(a, b);
   }
+  const bool outside = side == TraceSide::outside;
+  // A boundary halfedge has on its left the side its rings are traced on.
   const auto boundary = [&](std::size_t h) {
-    const long k = keys[arrangement.face[h]];
-    return k >= 0 && k != keys[arrangement.face[h ^ 1]];
+    const long k = keys[arrangement.face[h]], across = keys[arrangement.face[h ^ 1]];
+    return outside ? (k < 0 && across >= 0) : (k >= 0 && k != across);
   };
-  // The rings traced (vertex numbers only), one after another.
+  // The rings traced (vertex numbers only), one after another, each with the faces it
+  // bounds on the inside side; traced outside, each ring's faces are one polygon, and its
+  // vertices are reversed so that the inside lies on its left.
   std::vector<std::size_t> ring_vertices, ring_start{0}, ring_face;
   std::vector<bool> traced(halfedges, false);
   for (std::size_t h = 0; h < halfedges; ++h) {
     if (!boundary(h) || traced[h]) continue;
+    const std::size_t first = ring_vertices.size();
+    const std::size_t face = sets.root(arrangement.face[outside ? h ^ 1 : h]);
     std::size_t at = h;
     do {
       traced[at] = true;
       ring_vertices.push_back(arrangement.origin[at]);
+      if (outside) sets.join(arrangement.face[at ^ 1], face);
       std::size_t next = arrangement.next[at];
       while (!boundary(next)) next = arrangement.next[next ^ 1];
       at = next;
     } while (at != h);
+    if (outside)
+      std::reverse(ring_vertices.begin() + static_cast<std::ptrdiff_t>(first), ring_vertices.end());
     ring_start.push_back(ring_vertices.size());
-    ring_face.push_back(sets.root(arrangement.face[h]));
+    ring_face.push_back(face);
   }
+  for (std::size_t& face : ring_face) face = sets.root(face);
   // The points of the vertices on them, made once each, across threads.
   std::vector<char> used(arrangement.points.size(), 0);
   for (const std::size_t v : ring_vertices) used[v] = 1;

@@ -40,14 +40,25 @@ struct SegmentArrangement {
 
 // returns the arrangement of segments (each of positive length; exact values in lowest
 // terms, as GMP requires of every operand and as arithmetic leaves them: corners are
-// numbered by hashes of their limbs), with counts: the unbounded
-// face counts 0, and crossing a segment adds its left count on its left.
+// numbered by hashes of their limbs), with counts: the unbounded face counts 0, and
+// crossing a segment adds its left count on its left.
 SegmentArrangement arrange(const std::vector<LayerSegment>& segments);
+
+// Which side a region's rings are traced on, which decides how a region that touches
+// itself at a point is written. inside: a polygon is the faces joined across edges, so two
+// parts touching at a corner are two polygons, and a hole touching the outer boundary at a
+// point is part of that boundary (the overlays of sun-hours, as before with CGAL's
+// arrangement). outside: the rings are the boundaries of the faces around the region (keys
+// below 0), so two parts touching at a corner are one polygon whose outer boundary touches
+// itself, and a hole touching the outer boundary is a hole: what CGAL's Polygon_set_2 gives
+// (the union of a face's shadows).
+enum class TraceSide { inside, outside };
 
 // returns the polygons of the faces whose key (from their count) is k >= 0, by k: the
 // boundaries between keys traced into canonical rings (counter-clockwise outer boundaries,
-// clockwise holes), as region_overlay.cpp's polygons_by_key does on CGAL's arrangement.
+// clockwise holes) on the given side.
 std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
-    const SegmentArrangement& arrangement, const std::function<long(long)>& key);
+    const SegmentArrangement& arrangement, const std::function<long(long)>& key,
+    TraceSide side = TraceSide::inside);
 
 }  // namespace penumbra::detail
