@@ -19,6 +19,14 @@ void emit_face(JsonEmitter& out, const Scene& scene, const SunHoursResult& resul
   // A ground under a city holds millions of points, each in the rings of the parts on
   // either side: their world doubles are computed once, ahead, across threads.
   std::vector<const Point2*> points;
+  std::size_t corners = 0;  // with repeats: an upper bound on the points, for one allocation
+  for (const Coverage& part : result.hours[r].parts)
+    for (const Polygon2& polygon : part.region.polygons) {
+      corners += polygon.outer.size();
+      for (const Ring2& hole : polygon.holes) corners += hole.size();
+    }
+  output.world.reserve(corners);
+  points.reserve(corners);
   for (const Coverage& part : result.hours[r].parts) add_points(output, points, part.region);
   round_points(output, points);
   emit_face_entry(out, output, exact, [&] {
