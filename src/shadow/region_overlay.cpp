@@ -6,6 +6,7 @@
 #include <map>
 #include <numeric>
 
+#include "disjoint_sets.h"
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
 #include "segment_arrangement.h"
@@ -31,17 +32,12 @@ std::vector<std::vector<Piece>> clusters_of(const std::vector<Piece>& pieces) {
     for (const Point2& p : pieces[k].polygon->outer) box += p.bbox();
     boxes.emplace_back(box, k);
   }
-  std::vector<std::size_t> parent(pieces.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](std::size_t k) {
-    while (parent[k] != k) k = parent[k] = parent[parent[k]];
-    return k;
-  };
+  detail::DisjointSets sets(pieces.size());
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
-    parent[root(a.handle())] = root(b.handle());
+    sets.join(a.handle(), b.handle());
   });
   std::map<std::size_t, std::vector<Piece>> by_root;
-  for (std::size_t k = 0; k < pieces.size(); ++k) by_root[root(k)].push_back(pieces[k]);
+  for (std::size_t k = 0; k < pieces.size(); ++k) by_root[sets.root(k)].push_back(pieces[k]);
   std::vector<std::vector<Piece>> clusters;
   for (auto& entry : by_root) clusters.push_back(std::move(entry.second));
   return clusters;

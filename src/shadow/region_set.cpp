@@ -10,6 +10,7 @@
 #include <CGAL/Polygon_set_2.h>
 
 #include "convex_difference.h"
+#include "disjoint_sets.h"
 #include "exact_compare.h"
 #include "half_plane.h"
 #include "penumbra/base/parallel.h"
@@ -103,23 +104,18 @@ Region2 unite_regions(const std::vector<Region2>& regions) {
 
 std::vector<std::vector<std::size_t>> touching_groups(const std::vector<Ring2>& rings) {
   // Union-find over the pairs whose boxes (rounded outward) meet and whose closures meet.
-  std::vector<std::size_t> parent(rings.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](std::size_t k) {
-    while (parent[k] != k) k = parent[k] = parent[parent[k]];
-    return k;
-  };
+  DisjointSets sets(rings.size());
   const auto candidates = box_pairs(rings);
   std::vector<char> touching(candidates.size());
   for_each_index(candidates.size(), true, [&](std::size_t k) {
     touching[k] = !strictly_apart(rings[candidates[k].first], rings[candidates[k].second]);
   });
   for (std::size_t k = 0; k < candidates.size(); ++k)
-    if (touching[k]) parent[root(candidates[k].first)] = root(candidates[k].second);
+    if (touching[k]) sets.join(candidates[k].first, candidates[k].second);
   std::vector<std::vector<std::size_t>> groups;
   std::vector<long> group_of(rings.size(), -1);
   for (std::size_t k = 0; k < rings.size(); ++k) {
-    long& group = group_of[root(k)];
+    long& group = group_of[sets.root(k)];
     if (group < 0) {
       group = static_cast<long>(groups.size());
       groups.emplace_back();

@@ -12,6 +12,7 @@
 
 #include <tbb/parallel_sort.h>
 
+#include "disjoint_sets.h"
 #include "penumbra/base/parallel.h"
 #include "penumbra/geometry/exact.h"
 
@@ -189,39 +190,6 @@ bool before(const Direction& u, const Direction& v) {
   return cross_sign(u, v) > 0;
 }
 
-// returns the sign of the area that the ring of vertices [first, last) encloses,
-// counter-clockwise positive: the shoelace sum about its first point, in intervals and,
-// when they cannot tell, in rationals. A ring traced round a face's parts of one count is
-// an outer boundary (every loop of it counter-clockwise, the sum positive) or a hole
-// (every loop clockwise), even where it touches itself.
-int area_sign(const std::size_t* first, const std::size_t* last,
-              const SegmentArrangement& arrangement) {
-  const std::vector<RationalPoint2>& points = arrangement.points;
-  const std::size_t n = static_cast<std::size_t>(last - first);
-  const RationalPoint2& o = points[*first];
-  {
-    const auto at = [&](std::size_t i) {
-      const CGAL::Bbox_2& box = arrangement.boxes[first[i]];
-      return IntervalPoint{Interval(box.xmin(), box.xmax()), Interval(box.ymin(), box.ymax())};
-    };
-    CGAL::Protect_FPU_rounding<true> upward;
-    const IntervalPoint p0 = at(0);
-    Interval sum = 0;
-    for (std::size_t i = 1; i + 1 < n; ++i) {
-      const IntervalPoint p = at(i), q = at(i + 1);
-      sum += (p.x - p0.x) * (q.y - p0.y) - (q.x - p0.x) * (p.y - p0.y);
-    }
-    const CGAL::Uncertain<CGAL::Sign> sign = CGAL::sign(sum);
-    if (CGAL::is_certain(sign)) return static_cast<int>(sign.make_certain());
-  }
-  Rational sum = 0;
-  for (std::size_t i = 1; i + 1 < n; ++i) {
-    const RationalPoint2 &p = points[first[i]], &q = points[first[i + 1]];
-    sum += (p.x() - o.x()) * (q.y() - o.y()) - (q.x() - o.x()) * (p.y() - o.y());
-  }
-  return sgn(sum);
-}
-
 // Items grouped by a key, each group's items in increasing order, in one array (a vector of
 // vectors would allocate for each of millions of vertices and faces).
 struct Groups {
@@ -243,18 +211,6 @@ Groups group_by(std::size_t count, std::size_t keys, const Key& key) {
   for (std::size_t i = 0; i < count; ++i) groups.items[at[key(i)]++] = i;
   return groups;
 }
-
-// ---- union-find ---------------------------------------------------------------------
-
-struct Sets {
-  std::vector<std::size_t> parent;
-  explicit Sets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::size_t root(std::size_t k) {
-    while (parent[k] != k) k = parent[k] = parent[parent[k]];
-    return k;
-  }
-  void join(std::size_t a, std::size_t b) { parent[root(a)] = root(b); }
-};
 
 }  // namespace
 
@@ -520,7 +476,7 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
     for (std::size_t at = h; cycle[at] == SIZE_MAX; at = result.next[at]) cycle[at] = cycles;
     ++cycles;
   }
-  Sets component(points.size());
+  DisjointSets component(points.size());
   for (std::size_t e = 0; e < edges; ++e) component.join(origin[2 * e], origin[2 * e + 1]);
   std::map<std::size_t, std::size_t> lowest;  // component root -> its smallest vertex
   for (std::size_t v = 0; v < points.size(); ++v) {
@@ -531,7 +487,7 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
 
   // Faces: the cycles, each component's outer cycle joined to the face that holds it (found
   // by a ray from its smallest vertex to the left), and the unbounded face (index cycles).
-  Sets faces(cycles + 1);
+  DisjointSets faces(cycles + 1);
   // Edges by horizontal bands of their vertical extents (intervals rounded outward), for the
   // rays; only needed when there are components to locate beside the first.
   double y_low = 0, y_high = 0;
@@ -653,14 +609,6 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
       queue.push_back(g);
     }
   }
-  result.boxes.resize(points.size());
-  for_each_index(
-      points.size(), points.size() > 4096,
-      [&](std::size_t v) {
-        result.boxes[v] = CGAL::Bbox_2(approx[v].x.inf(), approx[v].y.inf(), approx[v].x.sup(),
-                                       approx[v].y.sup());
-      },
-      256);
   return result;
 }
 
@@ -670,7 +618,7 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
   const std::size_t halfedges = arrangement.origin.size();
   std::vector<long> keys(arrangement.faces);
   for (std::size_t f = 0; f < arrangement.faces; ++f) keys[f] = key_of(arrangement.count[f]);
-  Sets sets(arrangement.faces);
+  DisjointSets sets(arrangement.faces);
   for (std::size_t h = 0; h < halfedges; h += 2) {
     const std::size_t a = arrangement.face[h], b = arrangement.face[h + 1];
     if (a != b && keys[a] >= 0 && keys[a] == keys[b]) sets.join(a, b);
@@ -730,7 +678,7 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
         ring.reserve(static_cast<std::size_t>(last - first));
         for (const std::size_t* v = first; v != last; ++v) ring.push_back(points[*v]);
         canonical[r] = canonical_ring(ring);
-        if (!canonical[r].empty()) sign[r] = area_sign(first, last, arrangement);
+        if (!canonical[r].empty()) sign[r] = area_sign(canonical[r]);
       },
       16);
   std::vector<Polygon2> polygons(arrangement.faces);

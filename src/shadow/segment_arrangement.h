@@ -11,8 +11,6 @@
 #include <functional>
 #include <vector>
 
-#include <CGAL/Bbox_2.h>
-
 #include "penumbra/geometry/exact.h"
 #include "penumbra/shadow/region.h"
 
@@ -29,7 +27,6 @@ struct LayerSegment {
 // larger, 2e + 1 back), each halfedge's next around the face on its left, and faces.
 struct SegmentArrangement {
   std::vector<RationalPoint2> points;  // by vertex
-  std::vector<CGAL::Bbox_2> boxes;     // by vertex: its point's intervals, rounded outward
   std::vector<std::size_t> origin;     // by halfedge
   std::vector<std::size_t> next;       // by halfedge
   std::vector<long> left;              // by edge: the count added crossing into 2e's left

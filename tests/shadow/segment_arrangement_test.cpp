@@ -115,32 +115,20 @@ void check(const Polygon2& window, const std::vector<Region2>& regions, std::mt1
 
   // Each count's region, read back, holds the points that many regions hold; together they
   // tile the window.
-  std::vector<std::pair<long, Region2>> parts;
+  std::vector<Coverage> parts;
   for (auto& [count, polygons] : detail::polygons_by_count(
            arrangement, [](long count) { return count >= kWindow ? count - kWindow : -1; }))
-    parts.emplace_back(count, canonical_region(std::move(polygons)));
+    parts.push_back({static_cast<std::size_t>(count), canonical_region(std::move(polygons))});
   Exact total = 0;
-  for (const auto& part : parts) total += part.second.area;
+  for (const Coverage& part : parts) total += part.region.area;
   BOOST_TEST((total == canonical_region({window}).area));
   std::size_t compared = 0;
   for (int s = 0; s < 100; ++s) {
     const Point2 p(Exact(std::uniform_int_distribution<int>(1, 8 * 991 - 1)(random)) / 991,
                    Exact(std::uniform_int_distribution<int>(1, 8 * 991 - 1)(random)) / 991);
-    long expected = 0;
-    bool on_boundary = false;
-    for (const Region2& region : regions) {
-      const Where where = locate(region, p);
-      on_boundary = on_boundary || where == Where::boundary;
-      expected += where == Where::inside;
-    }
-    if (on_boundary) continue;
-    std::size_t holding = 0;
-    for (const auto& [count, region] : parts)
-      if (locate(region, p) == Where::inside) {
-        ++holding;
-        BOOST_TEST(count == expected);
-      }
-    BOOST_TEST(holding == 1u);
+    const std::optional<std::size_t> holding = regions_holding(regions, p);
+    if (!holding) continue;
+    check_one_part_holds(parts, p, *holding);
     ++compared;
   }
   BOOST_TEST(compared > 80u);

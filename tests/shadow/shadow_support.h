@@ -4,12 +4,15 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <optional>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include "penumbra/scene/load_scene.h"
+#include "penumbra/shadow/region_overlay.h"
 #include "penumbra/shadow/shadow_map.h"
 
 namespace penumbra::test {
@@ -32,6 +35,32 @@ inline Where locate(const Region2& region, const Point2& p) {
     if (!in_hole) return Where::inside;
   }
   return Where::outside;
+}
+
+// returns how many of regions hold p inside, or nothing when p lies on one's boundary (a
+// count read from an overlay is then ambiguous).
+inline std::optional<std::size_t> regions_holding(const std::vector<Region2>& regions,
+                                                  const Point2& p) {
+  std::size_t holding = 0;
+  for (const Region2& region : regions) {
+    const Where where = locate(region, p);
+    if (where == Where::boundary) return std::nullopt;
+    holding += where == Where::inside;
+  }
+  return holding;
+}
+
+// checks that exactly one of parts (an overlay's parts, tiling a window) holds p inside, and
+// that its count is expected.
+inline void check_one_part_holds(const std::vector<Coverage>& parts, const Point2& p,
+                                 std::size_t expected) {
+  std::size_t holding = 0;
+  for (const Coverage& part : parts)
+    if (locate(part.region, p) == Where::inside) {
+      ++holding;
+      BOOST_TEST(part.count == expected);
+    }
+  BOOST_TEST(holding == 1u);
 }
 
 // returns a random point strictly inside a convex face, in its frame: a convex
