@@ -8,13 +8,82 @@
 
 namespace penumbra {
 
+GridFloor GridFloor::of(const Rational& x) {
+  GridFloor result;
+  const mpz_srcptr den = x.get_den_mpz_t();
+  const mp_bitcnt_t twos = mpz_scan1(den, 0);
+  if (mpz_sizeinbase(den, 2) == twos + 1 && twos <= kEnclosureBits) {
+    // A denominator 2^twos (a double's): a shift, nothing rounded away.
+    mpz_mul_2exp(result.floor.get_mpz_t(), x.get_num_mpz_t(), kEnclosureBits - twos);
+    return result;
+  }
+  mpz_class shifted, remainder;
+  mpz_mul_2exp(shifted.get_mpz_t(), x.get_num_mpz_t(), kEnclosureBits);
+  mpz_fdiv_qr(result.floor.get_mpz_t(), remainder.get_mpz_t(), shifted.get_mpz_t(), den);
+  result.exact = remainder == 0;
+  return result;
+}
+
 Enclosure Enclosure::of(const Rational& x) {
-  mpz_class shifted = x.get_num(), remainder;
-  mpz_mul_2exp(shifted.get_mpz_t(), shifted.get_mpz_t(), kEnclosureBits);
+  GridFloor grid = GridFloor::of(x);
   Enclosure e;
-  mpz_fdiv_qr(e.lower.get_mpz_t(), remainder.get_mpz_t(), shifted.get_mpz_t(), x.get_den_mpz_t());
-  e.upper = remainder == 0 ? e.lower : e.lower + 1;
+  e.upper = grid.exact ? grid.floor : grid.floor + 1;
+  e.lower = std::move(grid.floor);
   return e;
+}
+
+namespace {
+
+// adds |x| to sum.
+void add_abs(mpz_class& sum, const mpz_class& x) {
+  if (sgn(x) >= 0)
+    mpz_add(sum.get_mpz_t(), sum.get_mpz_t(), x.get_mpz_t());
+  else
+    mpz_sub(sum.get_mpz_t(), sum.get_mpz_t(), x.get_mpz_t());
+}
+
+// adds to bound what bounds |X_i b_j + a_i Y_j + a_i b_j|.
+void add_error(mpz_class& bound, const GridFloor& xi, const GridFloor& yj) {
+  if (!yj.exact) add_abs(bound, xi.floor);
+  if (!xi.exact) add_abs(bound, yj.floor);
+  if (!xi.exact && !yj.exact) ++bound;
+}
+
+}  // namespace
+
+void ShoelaceEnclosure::add_edge(const GridFloor& xi, const GridFloor& yi, const GridFloor& xj,
+                                 const GridFloor& yj) {
+  mpz_addmul(sum_.get_mpz_t(), xi.floor.get_mpz_t(), yj.floor.get_mpz_t());
+  mpz_submul(sum_.get_mpz_t(), xj.floor.get_mpz_t(), yi.floor.get_mpz_t());
+  add_error(bound_, xi, yj);
+  add_error(bound_, xj, yi);
+}
+
+void ShoelaceEnclosure::add(const ShoelaceEnclosure& other) {
+  sum_ += other.sum_;
+  bound_ += other.bound_;
+}
+
+void ShoelaceEnclosure::remove(const ShoelaceEnclosure& other) {
+  sum_ -= other.sum_;
+  bound_ += other.bound_;
+}
+
+std::optional<int> ShoelaceEnclosure::sign() const {
+  if (cmp(sum_, bound_) > 0) return 1;
+  if (cmp(sum_, -bound_) < 0) return -1;
+  if (sgn(bound_) == 0) return 0;  // sum is exact, and 0
+  return std::nullopt;
+}
+
+Enclosure ShoelaceEnclosure::area() const {
+  // area 2^k = (twice 2^2k) / 2^(k + 1).
+  Enclosure area;
+  mpz_class end = sum_ - bound_;
+  mpz_fdiv_q_2exp(area.lower.get_mpz_t(), end.get_mpz_t(), kEnclosureBits + 1);
+  end = sum_ + bound_;
+  mpz_cdiv_q_2exp(area.upper.get_mpz_t(), end.get_mpz_t(), kEnclosureBits + 1);
+  return area;
 }
 
 namespace {

@@ -32,75 +32,53 @@ Rational twice_signed_area(const Ring2& ring) {
   return twice;
 }
 
-// adds to sum and bound what encloses 2^(2 kEnclosureBits) times the part of twice the
-// signed area of ring that its edges from corner from to corner to (mod its size) make,
-// in integers: |2^(2k) twice - sum| <= bound. With each coordinate written
-// x = (X + a) 2^-k, X = floor(x 2^k), 0 <= a < 1, a shoelace term x_i y_j - x_j y_i is 2^-2k
-// times X_i Y_j - X_j Y_i plus X_i b_j + a_i Y_j + a_i b_j - X_j b_i - a_j Y_i - a_j b_i, whose
-// size is below |X_i| + |Y_j| + 1 + |X_j| + |Y_i| + 1, less what a zero a or b leaves out
-// (coordinates on the grid, such as doubles, add nothing).
-void add_twice_area(const Ring2& ring, std::size_t from, std::size_t to, mpz_class& sum,
-                    mpz_class& bound) {
+// adds to twice the edges of ring from corner from to corner to (mod its size).
+void add_twice_area(const Ring2& ring, std::size_t from, std::size_t to, ShoelaceEnclosure& twice) {
   const std::size_t n = ring.size();
-  std::vector<Enclosure> x, y;  // X = x.lower, for the corners from to to + 1 (mod n)
+  std::vector<GridFloor> x, y;  // for the corners from to to + 1 (mod n)
+  x.reserve(to - from + 1);
+  y.reserve(to - from + 1);
   for (std::size_t i = from; i <= to; ++i) {
     const RationalPoint2& exact = exact_value(ring[i % n]);
-    x.push_back(Enclosure::of(exact.x()));
-    y.push_back(Enclosure::of(exact.y()));
+    x.push_back(GridFloor::of(exact.x()));
+    y.push_back(GridFloor::of(exact.y()));
   }
-  // bounds |X_i b_j + a_i Y_j + a_i b_j|.
-  const auto error = [](const Enclosure& xi, const Enclosure& yj) {
-    mpz_class e = 0;
-    if (!yj.exact()) e += abs(xi.lower);
-    if (!xi.exact()) e += abs(yj.lower);
-    if (!xi.exact() && !yj.exact()) e += 1;
-    return e;
-  };
-  for (std::size_t i = 0; i < to - from; ++i) {
-    sum += x[i].lower * y[i + 1].lower - x[i + 1].lower * y[i].lower;
-    bound += error(x[i], y[i + 1]) + error(x[i + 1], y[i]);
-  }
+  for (std::size_t i = 0; i < to - from; ++i) twice.add_edge(x[i], y[i], x[i + 1], y[i + 1]);
 }
 
 // The edges of a polygon's rings in runs of at most this many, summed across threads: the
 // ground of a city is a few polygons with up to 10^5 corners.
 constexpr std::size_t kEdgesPerRun = 4096;
 
-// returns an enclosure of the area of polygon (outer ring and holes).
+}  // namespace
+
 Enclosure area_enclosure(const Polygon2& polygon) {
   struct Run {
     const Ring2* ring;
     std::size_t from, to;  // edges from corner from to corner to (mod its size)
-    mpz_class sum = 0, bound = 0;
+    ShoelaceEnclosure twice;
   };
   std::vector<Run> runs;
   std::size_t edges = 0;
   const auto add = [&](const Ring2& ring) {
     edges += ring.size();
     for (std::size_t from = 0; from < ring.size(); from += kEdgesPerRun)
-      runs.push_back({&ring, from, std::min(ring.size(), from + kEdgesPerRun)});
+      runs.push_back({&ring, from, std::min(ring.size(), from + kEdgesPerRun), {}});
   };
   add(polygon.outer);
   for (const Ring2& hole : polygon.holes) add(hole);
   for_each_index(
       runs.size(), edges > kEdgesPerRun,
       [&](std::size_t k) {
-        add_twice_area(*runs[k].ring, runs[k].from, runs[k].to, runs[k].sum, runs[k].bound);
+        add_twice_area(*runs[k].ring, runs[k].from, runs[k].to, runs[k].twice);
       },
       4);
-  mpz_class sum = 0, bound = 0;
-  for (const Run& run : runs) {
-    sum += run.sum;
-    bound += run.bound;
-  }
-  // area 2^k = (twice 2^2k) / 2^(k + 1).
-  Enclosure area;
-  mpz_class end = sum - bound;
-  mpz_fdiv_q_2exp(area.lower.get_mpz_t(), end.get_mpz_t(), kEnclosureBits + 1);
-  end = sum + bound;
-  mpz_cdiv_q_2exp(area.upper.get_mpz_t(), end.get_mpz_t(), kEnclosureBits + 1);
-  return area;
+  ShoelaceEnclosure twice;
+  for (const Run& run : runs) twice.add(run.twice);
+  return twice.area();
 }
+
+namespace {
 
 // returns the exact area of polygons.
 Rational exact_area(const std::vector<Polygon2>& polygons) {
@@ -175,8 +153,10 @@ Ring2 canonical_ring(const Ring2& ring) {
   return out;
 }
 
-Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> area) {
-  Region2 region;
+namespace {
+
+// sorts holes and polygons.
+void sort_polygons(std::vector<Polygon2>& polygons) {
   for_each_index(
       polygons.size(), polygons.size() > 64,
       [&](std::size_t k) {
@@ -186,6 +166,19 @@ Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> ar
   tbb::parallel_sort(polygons.begin(), polygons.end(), [](const Polygon2& a, const Polygon2& b) {
     return ring_less(a.outer, b.outer);
   });
+}
+
+// returns the area of polygons, enclosed by areas: their exact sum is computed from the
+// rings when first asked for.
+Exact deferred_area(const std::vector<Polygon2>& polygons, const std::vector<Enclosure>& areas) {
+  return exact_sum(areas, [polygons] { return exact_area(polygons); });
+}
+
+}  // namespace
+
+Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> area) {
+  Region2 region;
+  sort_polygons(polygons);
   if (area) {
     region.area = std::move(*area);
   } else if (!polygons.empty()) {
@@ -199,8 +192,16 @@ Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> ar
     for_each_index(
         polygons.size(), polygons.size() > 64,
         [&](std::size_t k) { areas[k] = area_enclosure(polygons[k]); }, 16);
-    region.area = exact_sum(areas, [polygons] { return exact_area(polygons); });
+    region.area = deferred_area(polygons, areas);
   }
+  region.polygons = std::move(polygons);
+  return region;
+}
+
+Region2 canonical_region(std::vector<Polygon2> polygons, const Enclosure& area) {
+  Region2 region;
+  sort_polygons(polygons);
+  if (!polygons.empty()) region.area = deferred_area(polygons, {area});
   region.polygons = std::move(polygons);
   return region;
 }

@@ -67,28 +67,40 @@ detail::SegmentArrangement overlay(const std::vector<Layer>& layers) {
   return detail::arrange(segments);
 }
 
+// Polygons, and an enclosure of their total area.
+struct Parts {
+  std::vector<Polygon2> polygons;
+  Enclosure area;
+
+  void add(Parts&& other) {
+    std::move(other.polygons.begin(), other.polygons.end(), std::back_inserter(polygons));
+    area.add(other.area);
+  }
+};
+
 template <typename Key>
-std::map<std::ptrdiff_t, std::vector<Polygon2>> polygons_by_key(
-    const detail::SegmentArrangement& overlay, const Key& key_of) {
-  std::map<std::ptrdiff_t, std::vector<Polygon2>> by_key;
-  for (auto& [key, polygons] : detail::polygons_by_count(
+std::map<std::ptrdiff_t, Parts> polygons_by_key(const detail::SegmentArrangement& overlay,
+                                                const Key& key_of) {
+  std::map<std::ptrdiff_t, Parts> by_key;
+  for (detail::KeyPolygons& entry : detail::polygons_by_count(
            overlay, [&](long count) { return static_cast<long>(key_of(count)); }))
-    by_key[key] = std::move(polygons);
+    by_key[entry.key] = {std::move(entry.polygons), std::move(entry.area)};
   return by_key;
 }
 
 // What one cluster contributes: its polygons by count (1 and more), and its extent (where
 // the count is at least 1).
 struct ClusterParts {
-  std::map<std::size_t, std::vector<Polygon2>> by_count;
+  std::map<std::size_t, Parts> by_count;
   std::vector<Polygon2> extent;
 };
 
 ClusterParts overlay_cluster(const std::vector<Piece>& cluster) {
   ClusterParts parts;
   if (cluster.size() == 1) {  // one polygon: itself, count 1
-    parts.by_count[1] = {*cluster.front().polygon};
-    parts.extent = {*cluster.front().polygon};
+    const Polygon2& polygon = *cluster.front().polygon;
+    parts.by_count[1] = {{polygon}, area_enclosure(polygon)};
+    parts.extent = {polygon};
     return parts;
   }
   std::map<std::size_t, Layer> by_region;
@@ -99,15 +111,17 @@ ClusterParts overlay_cluster(const std::vector<Piece>& cluster) {
   for (auto& [count, polygons] : polygons_by_key(
            all, [](long data) { return data > 0 ? static_cast<std::ptrdiff_t>(data) : -1; }))
     parts.by_count[static_cast<std::size_t>(count)] = std::move(polygons);
-  parts.extent = std::move(polygons_by_key(all, [](long data) { return data > 0 ? 0 : -1; })[0]);
+  parts.extent =
+      std::move(polygons_by_key(all, [](long data) { return data > 0 ? 0 : -1; })[0].polygons);
   return parts;
 }
 
 // returns the polygons of the faces of the overlay of layers whose count is count.
 Region2 region_counting(const std::vector<Layer>& layers, long count) {
   const detail::SegmentArrangement all = overlay(layers);
-  return canonical_region(
-      std::move(polygons_by_key(all, [count](long data) { return data == count ? 0 : -1; })[0]));
+  Parts parts =
+      std::move(polygons_by_key(all, [count](long data) { return data == count ? 0 : -1; })[0]);
+  return canonical_region(std::move(parts.polygons), parts.area);
 }
 
 // returns window less the polygons of extents (disjoint): the faces of the window's and the
@@ -139,18 +153,17 @@ std::vector<Coverage> coverage(const Polygon2& window, const std::vector<const R
 
   // Clusters lie strictly apart, and count 0 lies outside every extent: each count's
   // polygons are its clusters' together.
-  std::map<std::size_t, std::vector<Polygon2>> by_count;
+  std::map<std::size_t, Parts> by_count;
   std::vector<Polygon2> extents;
   for (ClusterParts& parts : cluster_parts) {
-    for (auto& [count, polygons] : parts.by_count)
-      std::move(polygons.begin(), polygons.end(), std::back_inserter(by_count[count]));
+    for (auto& [count, polygons] : parts.by_count) by_count[count].add(std::move(polygons));
     std::move(parts.extent.begin(), parts.extent.end(), std::back_inserter(extents));
   }
   std::vector<Coverage> result;
   if (Region2 rest = window_less(window, extents); !rest.empty())
     result.push_back({base, std::move(rest)});
-  for (auto& [count, polygons] : by_count)
-    if (Region2 region = canonical_region(std::move(polygons)); !region.empty())
+  for (auto& [count, parts] : by_count)
+    if (Region2 region = canonical_region(std::move(parts.polygons), parts.area); !region.empty())
       result.push_back({count + base, std::move(region)});
   return result;
 }

@@ -201,10 +201,13 @@ Region2 unite_groups(const std::vector<Ring2>& rings,
   // ring or more (segment_arrangement.h: the rings are counter-clockwise, so each adds one
   // on its left); the same faces a polygon set's union has.
   std::vector<std::vector<Polygon2>> pieces(groups.size());
+  std::vector<Enclosure> areas(groups.size());
   for_each_index(groups.size(), true, [&](std::size_t g) {
     if (groups[g].size() == 1) {
-      if (Ring2 ring = canonical_ring(rings[groups[g].front()]); !ring.empty())
+      if (Ring2 ring = canonical_ring(rings[groups[g].front()]); !ring.empty()) {
         pieces[g].push_back({std::move(ring), {}});
+        areas[g] = area_enclosure(pieces[g].back());
+      }
       return;
     }
     std::vector<LayerSegment> segments;
@@ -214,15 +217,20 @@ Region2 unite_groups(const std::vector<Ring2>& rings,
         segments.push_back({ring[i], ring[(i + 1) % ring.size()], 1});
     }
     if (segments.empty()) return;
-    for (auto& [key, polygons] : polygons_by_count(
+    for (KeyPolygons& united : polygons_by_count(
              arrange(segments), [](long count) { return count > 0 ? 0L : -1L; },
-             TraceSide::outside))
-      pieces[g] = std::move(polygons);
+             TraceSide::outside)) {
+      pieces[g] = std::move(united.polygons);
+      areas[g] = std::move(united.area);
+    }
   });
   std::vector<Polygon2> all;
-  for (std::vector<Polygon2>& group : pieces)
-    std::move(group.begin(), group.end(), std::back_inserter(all));
-  return canonical_region(std::move(all));
+  Enclosure area;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    std::move(pieces[g].begin(), pieces[g].end(), std::back_inserter(all));
+    area.add(areas[g]);
+  }
+  return canonical_region(std::move(all), area);
 }
 
 std::pair<Region2, Region2> unite_and_complement(

@@ -3,6 +3,7 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -612,9 +613,9 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& input) {
   return result;
 }
 
-std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
-    const SegmentArrangement& arrangement, const std::function<long(long)>& key_of,
-    TraceSide side) {
+std::vector<KeyPolygons> polygons_by_count(const SegmentArrangement& arrangement,
+                                           const std::function<long(long)>& key_of,
+                                           TraceSide side) {
   const std::size_t halfedges = arrangement.origin.size();
   std::vector<long> keys(arrangement.faces);
   for (std::size_t f = 0; f < arrangement.faces; ++f) keys[f] = key_of(arrangement.count[f]);
@@ -653,7 +654,40 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
     ring_face.push_back(face);
   }
   for (std::size_t& face : ring_face) face = sets.root(face);
-  // The points of the vertices on them, made once each, across threads.
+  // Twice each ring's area enclosed from its vertices' coordinates on the grid, added by
+  // key in blocks of rings across threads (a ground's overlay has 3 10^6 rings: their
+  // integers are not kept), with the ring's sign where the enclosure decides it.
+  const std::size_t rings = ring_face.size();
+  const auto ring_twice = [&](std::size_t r) {
+    const std::size_t* first = ring_vertices.data() + ring_start[r];
+    const std::size_t* last = ring_vertices.data() + ring_start[r + 1];
+    const auto grid = [&](std::size_t v) {
+      const RationalPoint2& p = arrangement.points[v];
+      return std::array<GridFloor, 2>{GridFloor::of(p.x()), GridFloor::of(p.y())};
+    };
+    ShoelaceEnclosure twice;
+    const std::array<GridFloor, 2> start = grid(*first);
+    std::array<GridFloor, 2> from = start;
+    for (const std::size_t* v = first; v != last; ++v) {
+      std::array<GridFloor, 2> to = v + 1 != last ? grid(v[1]) : start;
+      twice.add_edge(from[0], from[1], to[0], to[1]);
+      from = std::move(to);
+    }
+    return twice;
+  };
+  constexpr std::size_t kRingsPerBlock = 1024;
+  constexpr int kUndecided = 2;
+  std::vector<std::map<long, ShoelaceEnclosure>> block_twice((rings + kRingsPerBlock - 1) /
+                                                             kRingsPerBlock);
+  std::vector<int> sign(rings, kUndecided);
+  for_each_index(block_twice.size(), block_twice.size() > 1, [&](std::size_t b) {
+    for (std::size_t r = b * kRingsPerBlock; r < std::min(rings, (b + 1) * kRingsPerBlock); ++r) {
+      const ShoelaceEnclosure twice = ring_twice(r);
+      if (const std::optional<int> known = twice.sign()) sign[r] = *known;
+      block_twice[b][keys[ring_face[r]]].add(twice);
+    }
+  });
+  // The points of the vertices on the rings, made once each, across threads.
   std::vector<char> used(arrangement.points.size(), 0);
   for (const std::size_t v : ring_vertices) used[v] = 1;
   std::vector<Point2> points(arrangement.points.size());
@@ -663,12 +697,11 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
         if (used[v]) points[v] = point_from<Point2>(RationalPoint2(arrangement.points[v]));
       },
       256);
-  // Each made canonical and told outer boundary or hole, across threads: by the sign of its
-  // area, since an orientation test at one corner (CGAL::orientation_2) is wrong at a
-  // corner where the ring touches itself.
-  const std::size_t rings = ring_face.size();
+  // Each ring made canonical and told outer boundary or hole, across threads: by the sign of
+  // its area (the traced ring's is the canonical ring's: it drops only corners on a line),
+  // since an orientation test at one corner (CGAL::orientation_2) is wrong at a corner where
+  // the ring touches itself.
   std::vector<Ring2> canonical(rings);
-  std::vector<int> sign(rings, 0);
   for_each_index(
       rings, rings > 64,
       [&](std::size_t r) {
@@ -678,23 +711,39 @@ std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
         ring.reserve(static_cast<std::size_t>(last - first));
         for (const std::size_t* v = first; v != last; ++v) ring.push_back(points[*v]);
         canonical[r] = canonical_ring(ring);
-        if (!canonical[r].empty()) sign[r] = area_sign(canonical[r]);
+        if (!canonical[r].empty() && sign[r] == kUndecided) sign[r] = area_sign(canonical[r]);
       },
       16);
-  std::vector<Polygon2> polygons(arrangement.faces);
+  // The polygons by face (the root of the faces a ring bounds).
+  std::vector<std::size_t> polygon_of(arrangement.faces, rings);
+  std::vector<Polygon2> polygons;
   for (std::size_t r = 0; r < rings; ++r) {
     if (canonical[r].empty()) continue;
-    Polygon2& polygon = polygons[ring_face[r]];
+    std::size_t& slot = polygon_of[ring_face[r]];
+    if (slot == rings) {
+      slot = polygons.size();
+      polygons.emplace_back();
+    }
     if (sign[r] > 0)
-      polygon.outer = std::move(canonical[r]);
+      polygons[slot].outer = std::move(canonical[r]);
     else
-      polygon.holes.push_back(std::move(canonical[r]));
+      polygons[slot].holes.push_back(std::move(canonical[r]));
   }
-  std::map<long, std::vector<Polygon2>> by_key;
+  std::map<long, std::pair<std::vector<Polygon2>, ShoelaceEnclosure>> by_key;
+  for (const std::map<long, ShoelaceEnclosure>& block : block_twice)
+    for (const auto& [key, twice] : block) by_key[key].second.add(twice);
+  // The holes of faces without an outer boundary (the unbounded face's, when its key is one
+  // to keep) are not kept: their areas are taken off again.
+  for (std::size_t r = 0; r < rings; ++r)
+    if (const std::size_t slot = polygon_of[ring_face[r]];
+        slot != rings && polygons[slot].outer.empty())
+      by_key[keys[ring_face[r]]].second.remove(ring_twice(r));
   for (std::size_t f = 0; f < arrangement.faces; ++f)
-    if (!polygons[f].outer.empty()) by_key[keys[f]].push_back(std::move(polygons[f]));
-  std::vector<std::pair<long, std::vector<Polygon2>>> result;
-  for (auto& [key, list] : by_key) result.emplace_back(key, std::move(list));
+    if (polygon_of[f] != rings && !polygons[polygon_of[f]].outer.empty())
+      by_key[keys[f]].first.push_back(std::move(polygons[polygon_of[f]]));
+  std::vector<KeyPolygons> result;
+  for (auto& [key, entry] : by_key)
+    if (!entry.first.empty()) result.push_back({key, std::move(entry.first), entry.second.area()});
   return result;
 }
 

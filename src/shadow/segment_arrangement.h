@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "penumbra/geometry/exact.h"
+#include "penumbra/geometry/exact_sum.h"
 #include "penumbra/shadow/region.h"
 
 namespace penumbra::detail {
@@ -51,11 +52,19 @@ SegmentArrangement arrange(const std::vector<LayerSegment>& segments);
 // (the union of a face's shadows).
 enum class TraceSide { inside, outside };
 
-// returns the polygons of the faces whose key (from their count) is k >= 0, by k: the
-// boundaries between keys traced into canonical rings (counter-clockwise outer boundaries,
-// clockwise holes) on the given side.
-std::vector<std::pair<long, std::vector<Polygon2>>> polygons_by_count(
-    const SegmentArrangement& arrangement, const std::function<long(long)>& key,
-    TraceSide side = TraceSide::inside);
+// The polygons of the faces of one key, and an enclosure of their total area.
+struct KeyPolygons {
+  long key;
+  std::vector<Polygon2> polygons;
+  Enclosure area;
+};
+
+// returns the polygons of the faces whose key (from their count) is k >= 0, by increasing k:
+// the boundaries between keys traced into canonical rings (counter-clockwise outer
+// boundaries, clockwise holes) on the given side. Their areas are enclosed from the
+// vertices' coordinates, rounded to the enclosures' grid once each.
+std::vector<KeyPolygons> polygons_by_count(const SegmentArrangement& arrangement,
+                                           const std::function<long(long)>& key,
+                                           TraceSide side = TraceSide::inside);
 
 }  // namespace penumbra::detail

@@ -4,6 +4,8 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <array>
+#include <cmath>
 #include <random>
 
 #include "penumbra/geometry/exact_sum.h"
@@ -126,6 +128,97 @@ BOOST_AUTO_TEST_CASE(cancelling_terms_keep_their_sign) {
   BOOST_TEST(CGAL::exact(down) == -tiny);
   // Nothing at all: zero.
   BOOST_TEST(check_sum(lazy_sum({}), 0));
+}
+
+// A rational on the grid: floor <= x 2^k < floor + 1, equal exactly when exact; for random
+// rationals, doubles' dyadic values, and powers of two finer than the grid.
+BOOST_AUTO_TEST_CASE(grid_floors_bracket_the_value) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(20261208);
+  std::mt19937 engine(20261208);
+  std::vector<Rational> values{Rational(0),
+                               Rational(-3, 4),
+                               Rational(5, 3),
+                               Rational(-5, 3),
+                               Rational(1, mpz_class(1) << 130),
+                               Rational(-1, mpz_class(1) << 128),
+                               Rational(0.1),
+                               Rational(-1e-30)};
+  for (int k = 0; k < 300; ++k) values.push_back(random_rational(random, engine, 1 + k % 200));
+  const Rational unit(mpz_class(1) << kEnclosureBits);
+  for (const Rational& x : values) {
+    const GridFloor grid = GridFloor::of(x);
+    const Rational scaled = x * unit;
+    BOOST_TEST_CONTEXT(x) {
+      BOOST_TEST(Rational(grid.floor) <= scaled);
+      BOOST_TEST(scaled < Rational(grid.floor + 1));
+      BOOST_TEST(grid.exact == (Rational(grid.floor) == scaled));
+    }
+  }
+}
+
+// Twice a ring's area enclosed from its corners on the grid holds the rational shoelace sum
+// (written out here), and its sign, when it gives one, is that sum's: random rings of random
+// rationals, of doubles, and of both, with their reversals and rings of cancelling area.
+BOOST_AUTO_TEST_CASE(shoelace_enclosures_hold_the_rational_shoelace) {
+  gmp_randclass random(gmp_randinit_default);
+  random.seed(7);
+  std::mt19937 engine(7);
+  const Rational unit(mpz_class(1) << kEnclosureBits);
+  std::size_t decided = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const std::size_t n = 3 + engine() % 9;
+    std::vector<std::array<Rational, 2>> ring;
+    for (std::size_t i = 0; i < n; ++i) {
+      std::array<Rational, 2> p;
+      for (Rational& c : p)
+        c = trial % 3 == 1 ? Rational(std::ldexp(double(engine() % 4096) - 2048, -7))
+                           : random_rational(random, engine, 1 + trial % 90);
+      ring.push_back(p);
+    }
+    if (trial % 5 == 4) {  // back over itself: area zero
+      const std::vector<std::array<Rational, 2>> there(ring.begin() + 1, ring.end() - 1);
+      ring.insert(ring.end(), there.rbegin(), there.rend());
+    }
+    for (int reversed = 0; reversed < 2; ++reversed) {
+      Rational twice = 0;
+      ShoelaceEnclosure enclosure;
+      std::vector<std::array<GridFloor, 2>> grid;
+      for (const auto& p : ring) grid.push_back({GridFloor::of(p[0]), GridFloor::of(p[1])});
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const std::size_t j = (i + 1) % ring.size();
+        twice += ring[i][0] * ring[j][1] - ring[j][0] * ring[i][1];
+        enclosure.add_edge(grid[i][0], grid[i][1], grid[j][0], grid[j][1]);
+      }
+      const Enclosure area = enclosure.area();
+      Rational scaled = twice * unit;
+      scaled /= Rational(2);
+      BOOST_TEST_CONTEXT("trial " << trial << (reversed ? " reversed" : "")) {
+        BOOST_TEST(Rational(area.lower) <= scaled);
+        BOOST_TEST(scaled <= Rational(area.upper));
+        if (const std::optional<int> sign = enclosure.sign()) {
+          ++decided;
+          BOOST_TEST(*sign == sgn(twice));
+        }
+      }
+      std::reverse(ring.begin(), ring.end());
+    }
+  }
+  BOOST_TEST(decided > 600u);  // most signs are decided by the enclosure
+
+  // A triangle finer than the grid: every corner's floor is 0 and none is exact, so the sum
+  // is 0 and only the bound's a_i b_j terms say that it may not be.
+  const Rational tiny(1, mpz_class(3) << 130);
+  const std::array<std::array<Rational, 2>, 3> triangle{
+      {{tiny, tiny}, {2 * tiny, tiny}, {tiny, 2 * tiny}}};
+  ShoelaceEnclosure fine;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto& p = triangle[i];
+    const auto& q = triangle[(i + 1) % 3];
+    fine.add_edge(GridFloor::of(p[0]), GridFloor::of(p[1]), GridFloor::of(q[0]),
+                  GridFloor::of(q[1]));
+  }
+  BOOST_TEST(!fine.sign().has_value());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

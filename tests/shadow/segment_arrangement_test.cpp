@@ -116,9 +116,24 @@ void check(const Polygon2& window, const std::vector<Region2>& regions, std::mt1
   // Each count's region, read back, holds the points that many regions hold; together they
   // tile the window.
   std::vector<Coverage> parts;
-  for (auto& [count, polygons] : detail::polygons_by_count(
-           arrangement, [](long count) { return count >= kWindow ? count - kWindow : -1; }))
-    parts.push_back({static_cast<std::size_t>(count), canonical_region(std::move(polygons))});
+  for (detail::KeyPolygons& entry : detail::polygons_by_count(
+           arrangement, [](long count) { return count >= kWindow ? count - kWindow : -1; })) {
+    // The enclosure of the area, from the vertices, holds the rings' exact shoelace area.
+    const Region2 region = canonical_region(entry.polygons);
+    const Rational scaled = exact_value(region.area) * Rational(mpz_class(1) << kEnclosureBits);
+    BOOST_TEST(Rational(entry.area.lower) <= scaled);
+    BOOST_TEST(scaled <= Rational(entry.area.upper));
+    parts.push_back({static_cast<std::size_t>(entry.key), region});
+  }
+  // The same with the faces of the window alone keyed as the unbounded face: those joined to
+  // it are dropped, and the areas of the rest are still enclosed.
+  for (const detail::KeyPolygons& entry : detail::polygons_by_count(
+           arrangement, [](long count) { return count == 0 ? 0 : count - kWindow; })) {
+    const Region2 region = canonical_region(entry.polygons);
+    const Rational scaled = exact_value(region.area) * Rational(mpz_class(1) << kEnclosureBits);
+    BOOST_TEST(Rational(entry.area.lower) <= scaled);
+    BOOST_TEST(scaled <= Rational(entry.area.upper));
+  }
   Exact total = 0;
   for (const Coverage& part : parts) total += part.region.area;
   BOOST_TEST((total == canonical_region({window}).area));
@@ -172,12 +187,22 @@ BOOST_AUTO_TEST_CASE(an_island_in_a_hole_has_the_count_derived_by_hand) {
   // the island, the small square.
   BOOST_TEST(arrangement.faces == 6u);
   std::map<long, Exact> area;
-  for (auto& [count, polygons] : detail::polygons_by_count(
+  for (detail::KeyPolygons& entry : detail::polygons_by_count(
            arrangement, [](long count) { return count >= kWindow ? count - kWindow : -1; }))
-    area[count] = canonical_region(std::move(polygons)).area;
+    area[entry.key] = canonical_region(std::move(entry.polygons), entry.area).area;
   BOOST_TEST_REQUIRE(area.size() == 2u);
   BOOST_TEST((area[1] == Exact(20 + 4 + 1)));
   BOOST_TEST((area[0] == Exact(100 - 25)));
+  // Keys that put the faces of the window alone with the unbounded face: those around the
+  // ring join it and are dropped (a polygon with no outer boundary, whose rings' areas are
+  // taken off again), and the pocket in the ring's hole is kept. Its area, 16 - 4, is
+  // enclosed exactly: the corners are integers.
+  const std::vector<detail::KeyPolygons> merged = detail::polygons_by_count(
+      arrangement, [](long count) { return count == 0 || count == kWindow ? 0 : -1; });
+  BOOST_TEST_REQUIRE(merged.size() == 1u);
+  BOOST_TEST((canonical_region(merged[0].polygons).area == Exact(16 - 4)));
+  BOOST_TEST(merged[0].area.lower == mpz_class(16 - 4) << kEnclosureBits);
+  BOOST_TEST(merged[0].area.upper == mpz_class(16 - 4) << kEnclosureBits);
   std::mt19937 random(7);
   check(window, regions, random);
 }
@@ -209,10 +234,10 @@ BOOST_AUTO_TEST_CASE(traced_from_outside_a_union_is_the_polygon_sets) {
       for (std::size_t i = 0; i < ring.size(); ++i)
         segments.push_back({ring[i], ring[(i + 1) % ring.size()], 1});
     std::vector<Polygon2> polygons;
-    for (auto& [key, part] : detail::polygons_by_count(
+    for (detail::KeyPolygons& united : detail::polygons_by_count(
              detail::arrange(segments), [](long c) { return c > 0 ? 0L : -1L; },
              detail::TraceSide::outside))
-      polygons = std::move(part);
+      polygons = std::move(united.polygons);
     const Region2 mine = canonical_region(std::move(polygons));
     const Region2 reference = detail::unite_minus(triangles);
     BOOST_TEST_CONTEXT("trial " << trial) {

@@ -38,6 +38,37 @@ struct Enclosure {
   }
 };
 
+// A number x on the enclosures' grid: floor = x 2^kEnclosureBits rounded down, exact when
+// nothing was rounded away.
+struct GridFloor {
+  mpz_class floor = 0;
+  bool exact = true;
+
+  static GridFloor of(const Rational& x);
+};
+
+// Twice the signed area of a ring (the shoelace formula) enclosed in integers, summed edge by
+// edge from its corners on the grid (docs/performance.md, "Sums of areas"). Writing each
+// coordinate x = (X + a) 2^-k, X = floor(x 2^k), 0 <= a < 1, an edge's term x_i y_j - x_j y_i
+// is 2^-2k times X_i Y_j - X_j Y_i plus X_i b_j + a_i Y_j + a_i b_j - X_j b_i - a_j Y_i - a_j b_i,
+// whose size is below |X_i| + |Y_j| + 1 + |X_j| + |Y_i| + 1, less what a zero a or b leaves out
+// (coordinates on the grid, such as doubles, add nothing): then |2^2k twice - sum| <= bound.
+class ShoelaceEnclosure {
+ public:
+  // adds the term of the edge from corner (xi, yi) to corner (xj, yj).
+  void add_edge(const GridFloor& xi, const GridFloor& yi, const GridFloor& xj, const GridFloor& yj);
+  void add(const ShoelaceEnclosure& other);
+  // takes off what other added (its bound still adds).
+  void remove(const ShoelaceEnclosure& other);
+  // returns the sign of twice the area when the enclosure decides it, else nothing.
+  std::optional<int> sign() const;
+  // returns an enclosure of the area (half of twice the area).
+  Enclosure area() const;
+
+ private:
+  mpz_class sum_ = 0, bound_ = 0;
+};
+
 // returns the sum of terms (exact_sum results or any other Epeck numbers) as an Epeck number
 // whose exact value is computed on first use; the enclosures of exact_sum terms are added,
 // the exact values of the others are taken.

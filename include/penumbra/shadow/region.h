@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "penumbra/geometry/exact_sum.h"
 #include "penumbra/geometry/kernel.h"
 
 namespace penumbra {
@@ -48,6 +49,14 @@ Ring2 canonical_ring(const Ring2& ring);
 // rings are already canonical. area, when given, is the region's area known otherwise
 // (the window's less its complement's: the same exact value, without summing the rings).
 Region2 canonical_region(std::vector<Polygon2> polygons, std::optional<Exact> area = {});
+
+// the same, with an enclosure of the polygons' total area found ahead (an overlay's, from its
+// vertices once each): the exact area is computed from the rings when first asked for.
+Region2 canonical_region(std::vector<Polygon2> polygons, const Enclosure& area);
+
+// returns an enclosure of the area of polygon (outer boundary less holes), in integers
+// (exact_sum.h), its long rings summed in runs across threads.
+Enclosure area_enclosure(const Polygon2& polygon);
 
 // returns a region holding the single convex polygon ring (counter-clockwise).
 Region2 convex_region(const Ring2& ring);
