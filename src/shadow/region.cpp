@@ -1,6 +1,8 @@
 #include "penumbra/shadow/region.h"
 
 #include <algorithm>
+#include <limits>
+#include <memory>
 
 #include <tbb/parallel_sort.h>
 
@@ -20,16 +22,20 @@ bool ring_less(const Ring2& a, const Ring2& b) {
   return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), point_less);
 }
 
-// returns twice the signed area of ring in rationals (the shoelace formula).
-Rational twice_signed_area(const Ring2& ring) {
+// returns twice the signed area of the ring of corners first to last in rationals (the
+// shoelace formula).
+Rational twice_signed_area(const Point2* first, const Point2* last) {
   Rational twice = 0;
-  const std::size_t n = ring.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const RationalPoint2& p = exact_value(ring[k]);
-    const RationalPoint2& q = exact_value(ring[(k + 1) % n]);
+  for (const Point2* at = first; at != last; ++at) {
+    const RationalPoint2& p = exact_value(*at);
+    const RationalPoint2& q = exact_value(at + 1 != last ? at[1] : *first);
     twice += p.x() * q.y() - q.x() * p.y();
   }
   return twice;
+}
+
+Rational twice_signed_area(const Ring2& ring) {
+  return twice_signed_area(ring.data(), ring.data() + ring.size());
 }
 
 // adds to twice the edges of ring from corner from to corner to (mod its size).
@@ -80,16 +86,50 @@ Enclosure area_enclosure(const Polygon2& polygon) {
 
 namespace {
 
-// returns the exact area of polygons.
-Rational exact_area(const std::vector<Polygon2>& polygons) {
-  std::vector<Rational> areas;
-  for (const Polygon2& polygon : polygons) {
-    Rational twice = twice_signed_area(polygon.outer);
-    for (const Ring2& hole : polygon.holes) twice += twice_signed_area(hole);
-    areas.push_back(twice / 2);
+// The rings of polygons in one array (what an area computed later keeps: one allocation,
+// not one per ring).
+class FlatPolygons {
+ public:
+  explicit FlatPolygons(const std::vector<Polygon2>& polygons) {
+    std::size_t corners = 0, rings = 0;
+    for (const Polygon2& polygon : polygons) {
+      corners += polygon.outer.size();
+      rings += 1 + polygon.holes.size();
+      for (const Ring2& hole : polygon.holes) corners += hole.size();
+    }
+    points_.reserve(corners);
+    ring_end_.reserve(rings);
+    polygon_end_.reserve(polygons.size());
+    const auto add = [&](const Ring2& ring) {
+      points_.insert(points_.end(), ring.begin(), ring.end());
+      ring_end_.push_back(points_.size());
+    };
+    for (const Polygon2& polygon : polygons) {
+      add(polygon.outer);
+      for (const Ring2& hole : polygon.holes) add(hole);
+      polygon_end_.push_back(ring_end_.size());
+    }
   }
-  return pairwise_sum(std::move(areas));
-}
+
+  // returns the exact area of the polygons: each polygon's, added pairwise.
+  Rational area() const {
+    std::vector<Rational> areas;
+    std::size_t ring = 0;
+    for (const std::size_t end : polygon_end_) {
+      Rational twice = 0;
+      for (; ring < end; ++ring) {
+        const Point2* first = points_.data() + (ring == 0 ? 0 : ring_end_[ring - 1]);
+        twice += twice_signed_area(first, points_.data() + ring_end_[ring]);
+      }
+      areas.push_back(twice / 2);
+    }
+    return pairwise_sum(std::move(areas));
+  }
+
+ private:
+  std::vector<Point2> points_;
+  std::vector<std::size_t> ring_end_, polygon_end_;
+};
 
 }  // namespace
 
@@ -155,7 +195,9 @@ Ring2 canonical_ring(const Ring2& ring) {
 
 namespace {
 
-// sorts holes and polygons.
+// sorts holes and polygons. The polygons are sorted by their first corners' x intervals
+// (in one array, not behind each polygon's handles), and by their outer rings exactly where
+// the intervals overlap: the order is ring_less's.
 void sort_polygons(std::vector<Polygon2>& polygons) {
   for_each_index(
       polygons.size(), polygons.size() > 64,
@@ -163,15 +205,41 @@ void sort_polygons(std::vector<Polygon2>& polygons) {
         std::sort(polygons[k].holes.begin(), polygons[k].holes.end(), ring_less);
       },
       16);
-  tbb::parallel_sort(polygons.begin(), polygons.end(), [](const Polygon2& a, const Polygon2& b) {
-    return ring_less(a.outer, b.outer);
+  if (polygons.size() < 2) return;
+  struct Key {
+    double low, high;  // the first corner's x lies in [low, high]
+    std::size_t polygon;
+  };
+  std::vector<Key> keys(polygons.size());
+  for_each_index(
+      polygons.size(), polygons.size() > 4096,
+      [&](std::size_t k) {
+        const Ring2& outer = polygons[k].outer;
+        if (outer.empty()) {  // never apart from another
+          keys[k] = {-std::numeric_limits<double>::infinity(),
+                     std::numeric_limits<double>::infinity(), k};
+          return;
+        }
+        const auto& x = CGAL::approx(outer.front()).x();
+        keys[k] = {x.inf(), x.sup(), k};
+      },
+      1024);
+  tbb::parallel_sort(keys.begin(), keys.end(), [&](const Key& a, const Key& b) {
+    if (a.high < b.low) return true;
+    if (b.high < a.low) return false;
+    return ring_less(polygons[a.polygon].outer, polygons[b.polygon].outer);
   });
+  std::vector<Polygon2> sorted;
+  sorted.reserve(polygons.size());
+  for (const Key& key : keys) sorted.push_back(std::move(polygons[key.polygon]));
+  polygons = std::move(sorted);
 }
 
 // returns the area of polygons, enclosed by areas: their exact sum is computed from the
 // rings when first asked for.
 Exact deferred_area(const std::vector<Polygon2>& polygons, const std::vector<Enclosure>& areas) {
-  return exact_sum(areas, [polygons] { return exact_area(polygons); });
+  return exact_sum(
+      areas, [flat = std::make_shared<const FlatPolygons>(polygons)] { return flat->area(); });
 }
 
 }  // namespace

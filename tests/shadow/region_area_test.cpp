@@ -6,7 +6,9 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <random>
+#include <string>
 
 #include "penumbra/geometry/exact_sum.h"
 #include "penumbra/shadow/region.h"
@@ -159,6 +161,52 @@ BOOST_AUTO_TEST_CASE(area_sign_is_the_sign_of_the_shoelace_area) {
   BOOST_TEST(zero > 100);
   BOOST_TEST(positive > 300);
   BOOST_TEST(negative > 300);
+}
+
+// canonical_region sorts polygons by their outer rings, lexicographically by corners (each
+// corner by x, then y): the order compared with one written here, on shuffled polygons whose
+// first corners share x exactly (a coarse grid, thirds), or differ by 10^-30 (x intervals that
+// overlap), with the same first corner (the next corners decide), and with holes.
+BOOST_AUTO_TEST_CASE(polygons_are_sorted_by_their_outer_rings) {
+  std::mt19937 random(20261208);
+  const Rational tiny(1, mpz_class("1" + std::string(30, '0')));
+  const auto corner_less = [](const Point2& a, const Point2& b) {
+    const RationalPoint2 &p = CGAL::exact(a), &q = CGAL::exact(b);
+    return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
+  };
+  const auto ring_order = [&](const Ring2& a, const Ring2& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), corner_less);
+  };
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<Polygon2> polygons;
+    std::uniform_int_distribution<int> grid(0, 5), kind(0, 3);
+    for (int k = 0; k < 200; ++k) {
+      Rational x = third(grid(random)), y = third(grid(random));
+      if (kind(random) == 0) x += tiny;
+      // a right triangle with its smallest corner (x, y) first, counter-clockwise, and legs
+      // of random lengths: equal first corners are told apart by the second.
+      const Rational a = third(1 + grid(random)), b = third(1 + grid(random));
+      Polygon2 polygon{{point_of(x, y), point_of(x + a, y), point_of(x, y + b)}, {}};
+      if (kind(random) == 1)
+        polygon.holes.push_back({point_of(x + a / 8, y + b / 8), point_of(x + a / 8, y + b / 4),
+                                 point_of(x + a / 4, y + b / 8)});
+      polygons.push_back(std::move(polygon));
+    }
+    std::vector<Polygon2> expected = polygons;
+    std::stable_sort(expected.begin(), expected.end(), [&](const Polygon2& a, const Polygon2& b) {
+      return ring_order(a.outer, b.outer);
+    });
+    std::shuffle(polygons.begin(), polygons.end(), random);
+    const Region2 region = canonical_region(polygons);
+    BOOST_TEST_REQUIRE(region.polygons.size() == expected.size());
+    std::size_t out_of_order = 0;
+    for (std::size_t k = 0; k < expected.size(); ++k)
+      out_of_order += ring_order(region.polygons[k].outer, expected[k].outer) ||
+                      ring_order(expected[k].outer, region.polygons[k].outer);
+    BOOST_TEST(out_of_order == 0u);
+    for (std::size_t k = 1; k < region.polygons.size(); ++k)
+      BOOST_TEST(!ring_order(region.polygons[k].outer, region.polygons[k - 1].outer));
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()
