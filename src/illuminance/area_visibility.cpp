@@ -349,11 +349,12 @@ double IlluminanceSolver::Impl::area_light(const CachedArea& panel, const QueryP
                projected_solid_angle({0, 0, 0}, normal, part.ring.data(), part.ring.size());
     return light.luminance * std::max(0.0, omega);
   }
-  std::vector<const ConvexPolyhedron*> solids;
-  for (const NearOccluder& occluder : near) solids.push_back(occluder.solid);
+  std::vector<const ConvexPolyhedron*> occluder_solids;
+  for (const NearOccluder& occluder : near) occluder_solids.push_back(occluder.solid);
   std::vector<std::vector<Vec3d>> rings;
-  for (const Ring2& ring : visible_source(*source, point.exact(),
-                                          Plane3(point.exact(), to_exact_vector(normal)), solids)) {
+  for (const Ring2& ring :
+       visible_source(*source, point.exact(), Plane3(point.exact(), to_exact_vector(normal)),
+                      occluder_solids)) {
     rings.emplace_back();
     for (const Point2& q : ring) rings.back().push_back(to_double(source->frame.to_world(q)));
   }
