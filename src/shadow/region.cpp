@@ -38,20 +38,6 @@ Rational twice_signed_area(const Ring2& ring) {
   return twice_signed_area(ring.data(), ring.data() + ring.size());
 }
 
-// adds to twice the edges of ring from corner from to corner to (mod its size).
-void add_twice_area(const Ring2& ring, std::size_t from, std::size_t to, ShoelaceEnclosure& twice) {
-  const std::size_t n = ring.size();
-  std::vector<GridFloor> x, y;  // for the corners from to to + 1 (mod n)
-  x.reserve(to - from + 1);
-  y.reserve(to - from + 1);
-  for (std::size_t i = from; i <= to; ++i) {
-    const RationalPoint2& exact = exact_value(ring[i % n]);
-    x.push_back(GridFloor::of(exact.x()));
-    y.push_back(GridFloor::of(exact.y()));
-  }
-  for (std::size_t i = 0; i < to - from; ++i) twice.add_edge(x[i], y[i], x[i + 1], y[i + 1]);
-}
-
 // The edges of a polygon's rings in runs of at most this many, summed across threads: the
 // ground of a city is a few polygons with up to 10^5 corners.
 constexpr std::size_t kEdgesPerRun = 4096;
@@ -76,7 +62,10 @@ Enclosure area_enclosure(const Polygon2& polygon) {
   for_each_index(
       runs.size(), edges > kEdgesPerRun,
       [&](std::size_t k) {
-        add_twice_area(*runs[k].ring, runs[k].from, runs[k].to, runs[k].twice);
+        Run& run = runs[k];
+        run.twice.add_path(run.to - run.from + 1, [&](std::size_t i) -> const RationalPoint2& {
+          return exact_value((*run.ring)[(run.from + i) % run.ring->size()]);
+        });
       },
       4);
   ShoelaceEnclosure twice;

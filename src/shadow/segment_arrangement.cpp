@@ -3,7 +3,6 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
-#include <array>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -660,19 +659,11 @@ std::vector<KeyPolygons> polygons_by_count(const SegmentArrangement& arrangement
   const std::size_t rings = ring_face.size();
   const auto ring_twice = [&](std::size_t r) {
     const std::size_t* first = ring_vertices.data() + ring_start[r];
-    const std::size_t* last = ring_vertices.data() + ring_start[r + 1];
-    const auto grid = [&](std::size_t v) {
-      const RationalPoint2& p = arrangement.points[v];
-      return std::array<GridFloor, 2>{GridFloor::of(p.x()), GridFloor::of(p.y())};
-    };
+    const std::size_t n = ring_start[r + 1] - ring_start[r];
     ShoelaceEnclosure twice;
-    const std::array<GridFloor, 2> start = grid(*first);
-    std::array<GridFloor, 2> from = start;
-    for (const std::size_t* v = first; v != last; ++v) {
-      std::array<GridFloor, 2> to = v + 1 != last ? grid(v[1]) : start;
-      twice.add_edge(from[0], from[1], to[0], to[1]);
-      from = std::move(to);
-    }
+    twice.add_path(n + 1, [&](std::size_t i) -> const RationalPoint2& {
+      return arrangement.points[first[i % n]];
+    });
     return twice;
   };
   constexpr std::size_t kRingsPerBlock = 1024;

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "penumbra/geometry/exact.h"
@@ -57,6 +58,20 @@ class ShoelaceEnclosure {
  public:
   // adds the term of the edge from corner (xi, yi) to corner (xj, yj).
   void add_edge(const GridFloor& xi, const GridFloor& yi, const GridFloor& xj, const GridFloor& yj);
+  // adds the edges between corner(0), corner(1), ..., corner(count - 1) in turn (a ring
+  // repeats its first corner last), each corner (a RationalPoint2) rounded to the grid once.
+  template <typename Corner>
+  void add_path(std::size_t count, const Corner& corner) {
+    if (count < 2) return;
+    GridFloor x = GridFloor::of(corner(0).x()), y = GridFloor::of(corner(0).y());
+    for (std::size_t i = 1; i < count; ++i) {
+      const auto& next = corner(i);
+      GridFloor nx = GridFloor::of(next.x()), ny = GridFloor::of(next.y());
+      add_edge(x, y, nx, ny);
+      x = std::move(nx);
+      y = std::move(ny);
+    }
+  }
   void add(const ShoelaceEnclosure& other);
   // takes off what other added (its bound still adds).
   void remove(const ShoelaceEnclosure& other);
